@@ -1,0 +1,227 @@
+#include "io/read_surface.h"
+
+#include "io/gmsh_session.h"
+#include "io/text_diagnostics.h"
+#include "libquadmesh/core/error.h"
+#include "libquadmesh/core/mesh.h"
+
+#include <CGAL/IO/polygon_soup_io.h>
+#include <fmt/format.h>
+#include <gmsh.h>
+
+#include <array>
+#include <filesystem>
+#include <fstream>
+#include <unordered_map>
+
+namespace qm::io {
+
+namespace {
+
+[[noreturn]] void fail(const std::string& message) { throw Error(ErrorCode::bad_input, message); }
+
+/// Appends polygon `corners` as triangles (a fan from its first corner).
+std::size_t add_polygon(TriangleSoup& soup, const std::vector<int>& corners, std::int64_t label) {
+  for (std::size_t i = 1; i + 1 < corners.size(); ++i) {
+    soup.triangles.push_back({corners[0], corners[i], corners[i + 1]});
+    soup.triangle_labels.push_back(label);
+  }
+  return corners.size() > 3 ? 1 : 0;
+}
+
+bool ascii_msh(const std::string& path) {
+  std::ifstream in(path);
+  std::string magic, version, file_type;
+  return (in >> magic >> version >> file_type) && magic == "$MeshFormat" && file_type == "0";
+}
+
+std::optional<std::string> diagnose(const std::string& path, Format format) {
+  switch (format) {
+    case Format::obj: return diagnose_obj(path);
+    case Format::off: return diagnose_off(path);
+    case Format::stl: return diagnose_stl(path);
+    case Format::msh: return ascii_msh(path) ? diagnose_msh(path) : std::nullopt;
+    default: return std::nullopt;
+  }
+}
+
+SurfaceFile read_with_cgal(const std::string& path, Format format) {
+  std::vector<Point3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  bool ok = false;
+  try {
+    ok = CGAL::IO::read_polygon_soup(path, points, polygons);
+  } catch (const std::exception&) {
+    ok = false;
+  }
+  if (!ok) fail(fmt::format("{}: could not parse the file", path));
+  SurfaceFile file;
+  file.format = format;
+  const std::int64_t base = format == Format::obj ? 1 : 0;  // OBJ counts from 1
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    file.soup.points.emplace_back(points[i].x(), points[i].y(), points[i].z());
+    file.soup.point_labels.push_back(static_cast<std::int64_t>(i) + base);
+  }
+  std::vector<int> corners;
+  for (std::size_t f = 0; f < polygons.size(); ++f) {
+    corners.clear();
+    for (std::size_t v : polygons[f]) {
+      if (v >= points.size())
+        fail(fmt::format("{}: face {} refers to vertex {}, but the file has {} vertices", path,
+                         f + base, v + base, points.size()));
+      corners.push_back(static_cast<int>(v));
+    }
+    if (corners.size() < 3)
+      fail(fmt::format("{}: face {} has {} vertices", path, f + base, corners.size()));
+    file.polygons_split += add_polygon(file.soup, corners, static_cast<std::int64_t>(f) + base);
+  }
+  return file;
+}
+
+double bounding_box_diagonal() {
+  double x0, y0, z0, x1, y1, z1;
+  gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
+  return std::sqrt((x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0) + (z1 - z0) * (z1 - z0));
+}
+
+bool has_surface_elements() {
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> tags, nodes;
+  gmsh::model::mesh::getElements(types, tags, nodes, 2, -1);
+  return !types.empty();
+}
+
+/// Triangulates the CAD model loaded in Gmsh; returns the triangle size used.
+double triangulate_cad(const std::string& path, const ReadOptions& options,
+                       const GmshSession& session) {
+  std::vector<std::pair<int, int>> surfaces;
+  gmsh::model::getEntities(surfaces, 2);
+  if (surfaces.empty()) fail(fmt::format("{}: the model has no surface to mesh", path));
+  const double diagonal = bounding_box_diagonal();
+  const double quad_size = options.quad_size > 0 ? options.quad_size : diagonal / 60.0;
+  const double size = options.cad_mesh_size > 0 ? options.cad_mesh_size : quad_size / 3.0;
+  if (has_surface_elements()) return 0.0;  // the script meshed itself
+  gmsh::option::setNumber("Mesh.MeshSizeMax", size);
+  try {
+    gmsh::model::mesh::generate(2);
+  } catch (...) {
+  }
+  const std::string error = session.first_error();
+  if (!error.empty()) fail(fmt::format("{}: Gmsh could not triangulate it: {}", path, error));
+  return size;
+}
+
+void collect_cad_curves(const std::unordered_map<std::size_t, int>& node_index, CadCurves& cad) {
+  std::vector<std::pair<int, int>> curves;
+  gmsh::model::getEntities(curves, 1);
+  for (const auto& [dim, tag] : curves) {
+    std::vector<int> types;
+    std::vector<std::vector<std::size_t>> element_tags, element_nodes;
+    gmsh::model::mesh::getElements(types, element_tags, element_nodes, dim, tag);
+    for (std::size_t k = 0; k < types.size(); ++k) {
+      std::string name;
+      int edim = 0, order = 0, count = 0, primary = 0;
+      std::vector<double> local;
+      gmsh::model::mesh::getElementProperties(types[k], name, edim, order, count, local, primary);
+      if (edim != 1) continue;
+      for (std::size_t e = 0; e < element_tags[k].size(); ++e) {
+        const auto a = node_index.find(element_nodes[k][e * count]);
+        const auto b = node_index.find(element_nodes[k][e * count + 1]);
+        if (a != node_index.end() && b != node_index.end())
+          cad.edges.push_back({a->second, b->second, tag});
+      }
+    }
+  }
+  std::vector<std::pair<int, int>> groups;
+  gmsh::model::getPhysicalGroups(groups, 1);
+  for (const auto& [dim, tag] : groups) {
+    PhysicalCurveGroup group;
+    group.tag = tag;
+    gmsh::model::getPhysicalName(dim, tag, group.name);
+    gmsh::model::getEntitiesForPhysicalGroup(dim, tag, group.curves);
+    cad.groups.push_back(std::move(group));
+  }
+}
+
+SurfaceFile read_with_gmsh(const std::string& path, Format format, const ReadOptions& options) {
+  GmshSession session;
+  try {
+    gmsh::open(path);
+  } catch (...) {
+  }
+  std::string error = session.first_error();
+  if (!error.empty()) fail(fmt::format("{}: Gmsh could not read it: {}", path, error));
+
+  SurfaceFile file;
+  file.format = format;
+  if (is_cad(format)) file.cad_mesh_size = triangulate_cad(path, options, session);
+
+  std::vector<std::size_t> node_tags;
+  std::vector<double> coords, params;
+  gmsh::model::mesh::getNodes(node_tags, coords, params, -1, -1, false, false);
+  std::unordered_map<std::size_t, std::size_t> node_slot;
+  node_slot.reserve(node_tags.size());
+  for (std::size_t i = 0; i < node_tags.size(); ++i) node_slot.emplace(node_tags[i], i);
+
+  // Only nodes used by surface elements become points, in order of first use.
+  std::unordered_map<std::size_t, int> node_index;
+  auto point_of = [&](std::size_t tag) {
+    const auto found = node_index.find(tag);
+    if (found != node_index.end()) return found->second;
+    const auto slot = node_slot.find(tag);
+    if (slot == node_slot.end())
+      fail(fmt::format("{}: an element refers to node {}, which the file does not define", path,
+                       tag));
+    const std::size_t s = slot->second;
+    const int index = static_cast<int>(file.soup.points.size());
+    file.soup.points.emplace_back(coords[3 * s], coords[3 * s + 1], coords[3 * s + 2]);
+    file.soup.point_labels.push_back(static_cast<std::int64_t>(tag));
+    node_index.emplace(tag, index);
+    return index;
+  };
+
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> element_tags, element_nodes;
+  gmsh::model::mesh::getElements(types, element_tags, element_nodes, 2, -1);
+  std::vector<int> corners;
+  for (std::size_t k = 0; k < types.size(); ++k) {
+    std::string name;
+    int dim = 0, order = 0, count = 0, primary = 0;
+    std::vector<double> local;
+    gmsh::model::mesh::getElementProperties(types[k], name, dim, order, count, local, primary);
+    for (std::size_t e = 0; e < element_tags[k].size(); ++e) {
+      corners.clear();
+      for (int c = 0; c < primary; ++c) corners.push_back(point_of(element_nodes[k][e * count + c]));
+      file.polygons_split +=
+          add_polygon(file.soup, corners, static_cast<std::int64_t>(element_tags[k][e]));
+    }
+  }
+  collect_cad_curves(node_index, file.soup.cad);
+  return file;
+}
+
+}  // namespace
+
+SurfaceFile read_surface(const std::string& path, const ReadOptions& options) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(path, ec)) fail(fmt::format("{}: no such file", path));
+  if (fs::is_directory(path, ec)) fail(fmt::format("{}: is a directory, not a mesh file", path));
+  if (fs::file_size(path, ec) == 0) fail(fmt::format("{}: empty file", path));
+  if (!std::ifstream(path).good()) fail(fmt::format("{}: cannot open the file for reading", path));
+  const Format format = format_of(path);
+  if (!is_readable(format))
+    fail(fmt::format("{}: unknown input format '{}' (readable: {})", path,
+                     fs::path(path).extension().string(), readable_extensions()));
+
+  if (auto problem = diagnose(path, format)) fail(*problem);
+  SurfaceFile file = (format == Format::obj || format == Format::off || format == Format::ply)
+                         ? read_with_cgal(path, format)
+                         : read_with_gmsh(path, format, options);
+  if (file.soup.triangles.empty())
+    fail(fmt::format("{}: no triangles found (the file holds {} vertices and no surface elements)",
+                     path, file.soup.points.size()));
+  return file;
+}
+
+}  // namespace qm::io

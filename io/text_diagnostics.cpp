@@ -1,0 +1,225 @@
+#include "io/text_diagnostics.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace qm::io {
+
+namespace {
+
+std::vector<std::string> split_tokens(const std::string& line) {
+  std::istringstream in(line);
+  std::vector<std::string> tokens;
+  for (std::string t; in >> t;) tokens.push_back(t);
+  return tokens;
+}
+
+enum class NumberKind { ok, not_a_number, not_finite };
+
+NumberKind parse_real(const std::string& token, double& value) {
+  const char* begin = token.c_str();
+  char* end = nullptr;
+  value = std::strtod(begin, &end);
+  if (end == begin || *end != '\0') return NumberKind::not_a_number;
+  return std::isfinite(value) ? NumberKind::ok : NumberKind::not_finite;
+}
+
+bool parse_integer(const std::string& token, long& value) {
+  const char* begin = token.c_str();
+  char* end = nullptr;
+  value = std::strtol(begin, &end, 10);
+  return end != begin && *end == '\0';
+}
+
+/// Checks that tokens[first .. first+3) are three finite numbers.
+std::optional<std::string> check_coordinates(const std::string& where,
+                                             const std::vector<std::string>& tokens,
+                                             std::size_t first) {
+  if (tokens.size() < first + 3)
+    return fmt::format("{}: a vertex needs three coordinates, found {}", where,
+                       tokens.size() - first);
+  for (std::size_t i = first; i < first + 3; ++i) {
+    double v = 0;
+    switch (parse_real(tokens[i], v)) {
+      case NumberKind::not_a_number:
+        return fmt::format("{}: '{}' is not a number", where, tokens[i]);
+      case NumberKind::not_finite:
+        return fmt::format("{}: coordinate '{}' is not a finite number", where, tokens[i]);
+      case NumberKind::ok:
+        break;
+    }
+  }
+  return std::nullopt;
+}
+
+/// The next line that is neither blank nor a '#' comment; false at the end.
+bool next_content_line(std::istream& in, std::string& line, long& line_no) {
+  while (std::getline(in, line)) {
+    ++line_no;
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#') continue;
+    return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::optional<std::string> diagnose_obj(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  long line_no = 0, vertices = 0;
+  struct FaceRef {
+    long line, index;
+  };
+  std::vector<FaceRef> forward;  // positive indices are checked against the final count
+  while (std::getline(in, line)) {
+    ++line_no;
+    const auto tokens = split_tokens(line);
+    if (tokens.empty() || tokens[0][0] == '#') continue;
+    const std::string where = fmt::format("{}:{}", path, line_no);
+    if (tokens[0] == "v") {
+      if (auto problem = check_coordinates(where, tokens, 1)) return problem;
+      ++vertices;
+    } else if (tokens[0] == "f") {
+      if (tokens.size() < 4)
+        return fmt::format("{}: a face needs at least three vertices, found {}", where,
+                           tokens.size() - 1);
+      for (std::size_t i = 1; i < tokens.size(); ++i) {
+        long index = 0;
+        if (!parse_integer(tokens[i].substr(0, tokens[i].find('/')), index) || index == 0)
+          return fmt::format("{}: '{}' is not a vertex index", where, tokens[i]);
+        if (index < 0 && -index > vertices)
+          return fmt::format("{}: relative index {} reaches before the first vertex", where, index);
+        if (index > 0) forward.push_back({line_no, index});
+      }
+    }
+  }
+  for (const FaceRef& ref : forward)
+    if (ref.index > vertices)
+      return fmt::format("{}:{}: face refers to vertex {}, but the file defines only {}", path,
+                         ref.line, ref.index, vertices);
+  return std::nullopt;
+}
+
+std::optional<std::string> diagnose_off(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  long line_no = 0;
+  if (!next_content_line(in, line, line_no)) return fmt::format("{}: empty file", path);
+  auto tokens = split_tokens(line);
+  const std::string& magic = tokens[0];
+  if (magic.size() < 3 || magic.compare(magic.size() - 3, 3, "OFF") != 0)
+    return fmt::format("{}:{}: an OFF file starts with 'OFF', found '{}'", path, line_no, magic);
+  tokens.erase(tokens.begin());
+  if (tokens.empty()) {
+    if (!next_content_line(in, line, line_no))
+      return fmt::format("{}: the file ends before the vertex and face counts", path);
+    tokens = split_tokens(line);
+  }
+  long nv = 0, nf = 0;
+  if (tokens.size() < 2 || !parse_integer(tokens[0], nv) || !parse_integer(tokens[1], nf) ||
+      nv < 0 || nf < 0)
+    return fmt::format("{}:{}: expected the counts 'vertices faces edges'", path, line_no);
+  for (long v = 0; v < nv; ++v) {
+    if (!next_content_line(in, line, line_no))
+      return fmt::format("{}: the file ends after {} of {} vertices (truncated?)", path, v, nv);
+    if (auto problem = check_coordinates(fmt::format("{}:{}", path, line_no), split_tokens(line), 0))
+      return problem;
+  }
+  for (long f = 0; f < nf; ++f) {
+    if (!next_content_line(in, line, line_no))
+      return fmt::format("{}: the file ends after {} of {} faces (truncated?)", path, f, nf);
+    tokens = split_tokens(line);
+    long k = 0;
+    if (!parse_integer(tokens[0], k) || k < 3 || static_cast<long>(tokens.size()) < k + 1)
+      return fmt::format("{}:{}: expected a face 'n i1 ... in' with n >= 3", path, line_no);
+    for (long i = 1; i <= k; ++i) {
+      long index = 0;
+      if (!parse_integer(tokens[i], index) || index < 0 || index >= nv)
+        return fmt::format("{}:{}: vertex index '{}' is not in 0..{}", path, line_no, tokens[i],
+                           nv - 1);
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> diagnose_stl(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (bytes.empty()) return fmt::format("{}: empty file", path);
+  if (bytes.size() >= 84) {
+    std::uint32_t count = 0;
+    for (int i = 3; i >= 0; --i) count = (count << 8) | static_cast<unsigned char>(bytes[80 + i]);
+    if (84 + 50 * static_cast<std::uint64_t>(count) == bytes.size()) return std::nullopt;
+  }
+  const auto start = bytes.find_first_not_of(" \t\r\n");
+  if (start == std::string::npos || bytes.compare(start, 5, "solid") != 0) {
+    if (bytes.size() < 84)
+      return fmt::format("{}: {} bytes is too short for a binary STL and it is not ASCII STL",
+                         path, bytes.size());
+    std::uint32_t count = 0;
+    for (int i = 3; i >= 0; --i) count = (count << 8) | static_cast<unsigned char>(bytes[80 + i]);
+    return fmt::format(
+        "{}: binary STL header announces {} triangles ({} bytes) but the file has {} bytes "
+        "(truncated or not STL)",
+        path, count, 84 + 50 * static_cast<std::uint64_t>(count), bytes.size());
+  }
+  std::istringstream text(bytes);
+  std::string line;
+  long line_no = 0, corners = 0;
+  bool ended = false;
+  while (std::getline(text, line)) {
+    ++line_no;
+    const auto tokens = split_tokens(line);
+    if (tokens.empty()) continue;
+    const std::string where = fmt::format("{}:{}", path, line_no);
+    if (tokens[0] == "vertex") {
+      if (auto problem = check_coordinates(where, tokens, 1)) return problem;
+      ++corners;
+    } else if (tokens[0] == "endfacet") {
+      if (corners != 3) return fmt::format("{}: a facet needs 3 vertices, found {}", where, corners);
+      corners = 0;
+    } else if (tokens[0] == "endsolid") {
+      ended = true;
+    }
+  }
+  if (!ended) return fmt::format("{}: ASCII STL without 'endsolid' (truncated?)", path);
+  return std::nullopt;
+}
+
+std::optional<std::string> diagnose_msh(const std::string& path) {
+  std::ifstream in(path);
+  std::string line, open_section;
+  long line_no = 0, open_line = 0;
+  bool any_section = false;
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (line.empty() || line[0] != '$') continue;
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+    if (line.rfind("$End", 0) == 0) {
+      if (line.substr(4) != open_section)
+        return fmt::format("{}:{}: '{}' does not close '${}'", path, line_no, line, open_section);
+      open_section.clear();
+    } else {
+      if (!open_section.empty())
+        return fmt::format("{}:{}: section '${}' opened at line {} is not closed", path, line_no,
+                           open_section, open_line);
+      open_section = line.substr(1);
+      open_line = line_no;
+      any_section = true;
+    }
+  }
+  if (!any_section) return fmt::format("{}: not a Gmsh MSH file (no $MeshFormat section)", path);
+  if (!open_section.empty())
+    return fmt::format("{}: section '${}' opened at line {} is not closed (truncated?)", path,
+                       open_section, open_line);
+  return std::nullopt;
+}
+
+}  // namespace qm::io

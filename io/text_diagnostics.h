@@ -1,0 +1,23 @@
+// Finding the line at fault in a text mesh file that a library refused.
+//
+// CGAL's readers answer only yes or no; when they say no, these scanners look for
+// the first offending line so that the user's error names it. They are not
+// readers: they check the structure (counts, numbers, index ranges) and nothing
+// else.
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace qm::io {
+
+/// "file.obj:12: ..." for the first malformed line of an OBJ file, if any.
+std::optional<std::string> diagnose_obj(const std::string& path);
+/// The same for OFF (header, counts, truncation, index ranges).
+std::optional<std::string> diagnose_off(const std::string& path);
+/// Binary size against the announced triangle count, or the ASCII structure.
+std::optional<std::string> diagnose_stl(const std::string& path);
+/// Gmsh MSH sections: a missing $End... marker means a truncated file.
+std::optional<std::string> diagnose_msh(const std::string& path);
+
+}  // namespace qm::io

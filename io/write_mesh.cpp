@@ -1,0 +1,123 @@
+#include "io/write_mesh.h"
+
+#include "io/atomic_file.h"
+#include "io/gmsh_session.h"
+#include "libquadmesh/core/error.h"
+#include "libquadmesh/core/mesh.h"
+
+#include <CGAL/IO/polygon_soup_io.h>
+#include <fmt/format.h>
+#include <gmsh.h>
+
+#include <filesystem>
+#include <numeric>
+
+namespace qm::io {
+
+namespace {
+
+[[noreturn]] void fail(const std::string& message) { throw Error(ErrorCode::bad_input, message); }
+
+void write_with_cgal(const std::string& path, const OutputMesh& mesh) {
+  std::vector<Point3> points;
+  points.reserve(mesh.points.size());
+  for (const Vec3& p : mesh.points) points.emplace_back(p.x(), p.y(), p.z());
+  std::vector<std::vector<std::size_t>> polygons;
+  polygons.reserve(mesh.faces.size());
+  for (const auto& f : mesh.faces) polygons.emplace_back(f.begin(), f.end());
+  if (!CGAL::IO::write_polygon_soup(path, points, polygons,
+                                    CGAL::parameters::stream_precision(17)))
+    fail(fmt::format("{}: CGAL could not write the file", path));
+}
+
+/// Gmsh element type of a face with n corners.
+int gmsh_face_type(std::size_t n) {
+  if (n == 3) return 2;
+  if (n == 4) return 3;
+  throw AssertionError(fmt::format("faces must have 3 or 4 corners, found {}", n));
+}
+
+void write_with_gmsh(const std::string& path, const OutputMesh& mesh, const WriteOptions& options) {
+  GmshSession session;
+  gmsh::model::add("quadmesh");
+  const int surface = gmsh::model::addDiscreteEntity(2);
+  std::vector<std::size_t> node_tags(mesh.points.size());
+  std::iota(node_tags.begin(), node_tags.end(), std::size_t{1});
+  std::vector<double> coords;
+  coords.reserve(3 * mesh.points.size());
+  for (const Vec3& p : mesh.points) coords.insert(coords.end(), {p.x(), p.y(), p.z()});
+  gmsh::model::mesh::addNodes(2, surface, node_tags, coords);
+
+  std::size_t next_element = 1;
+  for (std::size_t corners : {std::size_t{3}, std::size_t{4}}) {
+    std::vector<std::size_t> tags, nodes;
+    for (const auto& f : mesh.faces) {
+      gmsh_face_type(f.size());
+      if (f.size() != corners) continue;
+      tags.push_back(next_element++);
+      for (int v : f) nodes.push_back(static_cast<std::size_t>(v) + 1);
+    }
+    if (!tags.empty()) gmsh::model::mesh::addElementsByType(surface, gmsh_face_type(corners), tags, nodes);
+  }
+  for (const LineGroup& group : mesh.line_groups) {
+    const int curve = gmsh::model::addDiscreteEntity(1);
+    std::vector<std::size_t> tags, nodes;
+    for (const auto& e : group.edges) {
+      tags.push_back(next_element++);
+      nodes.push_back(static_cast<std::size_t>(e[0]) + 1);
+      nodes.push_back(static_cast<std::size_t>(e[1]) + 1);
+    }
+    if (!tags.empty()) gmsh::model::mesh::addElementsByType(curve, 1, tags, nodes);
+    const int physical = gmsh::model::addPhysicalGroup(1, {curve});
+    gmsh::model::setPhysicalName(1, physical, group.name);
+  }
+  const int physical = gmsh::model::addPhysicalGroup(2, {surface});
+  gmsh::model::setPhysicalName(2, physical, mesh.surface_group);
+
+  gmsh::option::setNumber("Mesh.MshFileVersion", options.msh_version);
+  gmsh::option::setNumber("Mesh.Binary", options.binary ? 1 : 0);
+  gmsh::option::setNumber("Mesh.SaveAll", 0);
+  try {
+    gmsh::write(path);
+  } catch (...) {
+  }
+  const std::string error = session.first_error();
+  if (!error.empty()) fail(fmt::format("{}: Gmsh could not write it: {}", path, error));
+}
+
+}  // namespace
+
+void check_output_path(const std::string& path) {
+  namespace fs = std::filesystem;
+  const Format format = format_of(path);
+  if (!is_writable(format))
+    fail(fmt::format("{}: unknown output format '{}' (writable: {})", path,
+                     fs::path(path).extension().string(), writable_extensions()));
+  const fs::path folder = fs::path(path).parent_path();
+  std::error_code ec;
+  if (!folder.empty() && !fs::is_directory(folder, ec))
+    fail(fmt::format("{}: the folder {} does not exist", path, folder.string()));
+}
+
+void write_mesh(const std::string& path, const OutputMesh& mesh, const WriteOptions& options) {
+  check_output_path(path);
+  if (options.msh_version != 4.1 && options.msh_version != 2.2)
+    fail(fmt::format("{}: MSH version {} is not 4.1 or 2.2", path, options.msh_version));
+  const Format format = format_of(path);
+  write_atomically(path, [&](const std::string& temporary) {
+    if (format == Format::obj || format == Format::off || format == Format::ply)
+      write_with_cgal(temporary, mesh);
+    else
+      write_with_gmsh(temporary, mesh, options);
+  });
+}
+
+OutputMesh output_mesh_of(const TriangleSoup& soup) {
+  OutputMesh mesh;
+  mesh.points = soup.points;
+  mesh.faces.reserve(soup.triangles.size());
+  for (const Triangle& t : soup.triangles) mesh.faces.push_back({t[0], t[1], t[2]});
+  return mesh;
+}
+
+}  // namespace qm::io

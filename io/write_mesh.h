@@ -1,0 +1,48 @@
+// Writing a triangle or quad mesh with its physical groups, in the format the
+// output path's extension names (README "Formats").
+#pragma once
+
+#include "io/file_format.h"
+#include "libquadmesh/core/triangle_soup.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace qm::io {
+
+/// A named set of line elements (a boundary loop, a CAD physical curve).
+struct LineGroup {
+  std::string name;
+  std::vector<std::array<int, 2>> edges;  ///< point indices
+};
+
+/// What gets written: points, faces of 3 or 4 corners (counter-clockwise seen from
+/// the surface's front), line groups, and the name of the surface's group.
+struct OutputMesh {
+  std::vector<Vec3> points;
+  std::vector<std::vector<int>> faces;
+  std::vector<LineGroup> line_groups;
+  std::string surface_group = "surface";
+};
+
+struct WriteOptions {
+  double msh_version = 4.1;  ///< 4.1 or 2.2 for .msh
+  bool binary = false;       ///< binary .msh (Gmsh formats only)
+};
+
+/// Writes atomically: to a temporary file beside `path`, renamed at the end, so a
+/// failure never leaves a partial file. Gmsh formats get the line groups as
+/// physical curves and the faces as one physical surface; OBJ/OFF/PLY get the faces
+/// only. Throws qm::Error(bad_input) for an unknown extension or an unwritable
+/// destination.
+void write_mesh(const std::string& path, const OutputMesh& mesh, const WriteOptions& options = {});
+
+/// Throws qm::Error(bad_input) unless `path` has a writable extension and its
+/// folder exists: tools call it before any long computation.
+void check_output_path(const std::string& path);
+
+/// The soup's triangles as an OutputMesh (no line groups).
+OutputMesh output_mesh_of(const TriangleSoup& soup);
+
+}  // namespace qm::io

@@ -1,0 +1,22 @@
+// The one mesh type of the core (docs/style.md item 4): a CGAL Surface_mesh
+// over an exact-predicates kernel. Per-element data lives in property maps or in
+// Eigen vectors indexed by the mesh's indices.
+#pragma once
+
+#include "libquadmesh/core/triangle_soup.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+namespace qm {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point3 = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point3>;
+
+/// Builds the halfedge mesh of a consistently oriented, manifold soup (the soup of
+/// a supported AnalyzedSurface). Vertex i and face f of the mesh are point i and
+/// triangle f of the soup. Precondition: the soup passed assess_applicability.
+Mesh to_surface_mesh(const TriangleSoup& soup);
+
+}  // namespace qm

@@ -1,0 +1,19 @@
+#include "libquadmesh/core/triangle_soup.h"
+
+#include <fmt/format.h>
+
+namespace qm {
+
+std::string describe_vertex(const TriangleSoup& soup, int i) {
+  const Vec3& p = soup.points[static_cast<std::size_t>(i)];
+  return fmt::format("vertex {} at ({:.6g}, {:.6g}, {:.6g})", soup.point_label(i), p.x(), p.y(),
+                     p.z());
+}
+
+std::string describe_triangle(const TriangleSoup& soup, int f) {
+  const Triangle& t = soup.triangles[static_cast<std::size_t>(f)];
+  return fmt::format("triangle {} (vertices {}, {}, {})", soup.triangle_label(f),
+                     soup.point_label(t[0]), soup.point_label(t[1]), soup.point_label(t[2]));
+}
+
+}  // namespace qm

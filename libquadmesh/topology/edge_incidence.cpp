@@ -1,0 +1,42 @@
+#include "libquadmesh/topology/edge_incidence.h"
+
+#include <algorithm>
+#include <cstdint>
+
+namespace qm {
+
+EdgeIncidence edge_incidence(const TriangleSoup& soup) {
+  const std::size_t halfedge_count = 3 * soup.triangles.size();
+  struct Key {
+    std::int64_t a, b;
+    int h;
+  };
+  std::vector<Key> keys;
+  keys.reserve(halfedge_count);
+  for (std::size_t h = 0; h < halfedge_count; ++h) {
+    const int s = halfedge_source(soup, static_cast<int>(h));
+    const int t = halfedge_target(soup, static_cast<int>(h));
+    if (s == t) continue;
+    keys.push_back({std::min(s, t), std::max(s, t), static_cast<int>(h)});
+  }
+  std::sort(keys.begin(), keys.end(), [](const Key& x, const Key& y) {
+    return x.a != y.a ? x.a < y.a : (x.b != y.b ? x.b < y.b : x.h < y.h);
+  });
+
+  EdgeIncidence inc;
+  inc.halfedge_edge.assign(halfedge_count, -1);
+  inc.halfedges.reserve(keys.size());
+  inc.offsets.push_back(0);
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    if (i == 0 || keys[i].a != keys[i - 1].a || keys[i].b != keys[i - 1].b) {
+      if (i > 0) inc.offsets.push_back(static_cast<int>(i));
+      inc.edges.push_back({static_cast<int>(keys[i].a), static_cast<int>(keys[i].b)});
+    }
+    inc.halfedges.push_back(keys[i].h);
+    inc.halfedge_edge[keys[i].h] = static_cast<int>(inc.edges.size()) - 1;
+  }
+  if (!keys.empty()) inc.offsets.push_back(static_cast<int>(keys.size()));
+  return inc;
+}
+
+}  // namespace qm

@@ -1,0 +1,35 @@
+// Undirected edges of a triangle soup and the halfedges (triangle sides) on each.
+//
+// Halfedge h = 3 f + k of triangle f runs from triangles[f][k] to
+// triangles[f][(k + 1) % 3]. Sides whose two ends are the same point (a
+// combinatorially degenerate triangle) belong to no edge (halfedge_edge = -1).
+#pragma once
+
+#include "libquadmesh/core/triangle_soup.h"
+
+#include <array>
+#include <vector>
+
+namespace qm {
+
+struct EdgeIncidence {
+  std::vector<std::array<int, 2>> edges;  ///< edge e joins points edges[e][0] < edges[e][1]
+  std::vector<int> offsets;               ///< halfedges of e: halfedges[offsets[e] .. offsets[e+1])
+  std::vector<int> halfedges;             ///< halfedge ids grouped by edge
+  std::vector<int> halfedge_edge;         ///< edge of halfedge h, or -1 (size 3 F)
+
+  std::size_t edge_count() const { return edges.size(); }
+  int valence(int e) const { return offsets[e + 1] - offsets[e]; }
+  bool is_boundary(int e) const { return valence(e) == 1; }
+  bool is_manifold(int e) const { return valence(e) <= 2; }
+};
+
+inline int halfedge_source(const TriangleSoup& soup, int h) { return soup.triangles[h / 3][h % 3]; }
+inline int halfedge_target(const TriangleSoup& soup, int h) {
+  return soup.triangles[h / 3][(h % 3 + 1) % 3];
+}
+
+/// Builds the edge incidence in O(F log F).
+EdgeIncidence edge_incidence(const TriangleSoup& soup);
+
+}  // namespace qm
