@@ -36,6 +36,7 @@ bool is_readable(Format f) {
   switch (f) {
     case Format::obj: case Format::off: case Format::ply: case Format::stl: case Format::msh:
     case Format::geo: case Format::step: case Format::brep: case Format::iges:
+    case Format::vtk: case Format::bdf: case Format::unv: case Format::medit:
       return true;
     default:
       return false;
@@ -52,7 +53,9 @@ bool is_writable(Format f) {
   }
 }
 
-std::string readable_extensions() { return ".obj .off .ply .stl .msh .geo .step/.stp .brep .iges/.igs"; }
+std::string readable_extensions() {
+  return ".obj .off .ply .stl .msh .geo .step/.stp .brep .iges/.igs .vtk .bdf .unv .mesh";
+}
 std::string writable_extensions() { return ".msh .vtk .inp .bdf .unv .mesh .su2 .obj .off .ply"; }
 
 }  // namespace qm::io

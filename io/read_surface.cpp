@@ -12,6 +12,8 @@
 #include <array>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <sstream>
 #include <unordered_map>
 
 namespace qm::io {
@@ -39,6 +41,7 @@ std::optional<std::string> diagnose(const std::string& path, Format format) {
   switch (format) {
     case Format::obj: return diagnose_obj(path);
     case Format::off: return diagnose_off(path);
+    case Format::ply: return diagnose_ply(path);
     case Format::stl: return diagnose_stl(path);
     case Format::msh: return ascii_msh(path) ? diagnose_msh(path) : std::nullopt;
     default: return std::nullopt;
@@ -49,10 +52,17 @@ SurfaceFile read_with_cgal(const std::string& path, Format format) {
   std::vector<Point3> points;
   std::vector<std::vector<std::size_t>> polygons;
   bool ok = false;
-  try {
-    ok = CGAL::IO::read_polygon_soup(path, points, polygons);
-  } catch (const std::exception&) {
-    ok = false;
+  {
+    // CGAL's readers write their complaints to std::cerr; the library never prints,
+    // so they are silenced and the error below speaks instead.
+    std::ostringstream swallowed;
+    std::streambuf* previous = std::cerr.rdbuf(swallowed.rdbuf());
+    try {
+      ok = CGAL::IO::read_polygon_soup(path, points, polygons);
+    } catch (const std::exception&) {
+      ok = false;
+    }
+    std::cerr.rdbuf(previous);
   }
   if (!ok) fail(fmt::format("{}: could not parse the file", path));
   SurfaceFile file;

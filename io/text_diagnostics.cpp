@@ -47,7 +47,7 @@ std::optional<std::string> check_coordinates(const std::string& where,
     double v = 0;
     switch (parse_real(tokens[i], v)) {
       case NumberKind::not_a_number:
-        return fmt::format("{}: '{}' is not a number", where, tokens[i]);
+        return fmt::format("{}: '{}' is not a number", where, printable(tokens[i]));
       case NumberKind::not_finite:
         return fmt::format("{}: coordinate '{}' is not a finite number", where, tokens[i]);
       case NumberKind::ok:
@@ -69,6 +69,19 @@ bool next_content_line(std::istream& in, std::string& line, long& line_no) {
 }
 
 }  // namespace
+
+std::string printable(const std::string& text, std::size_t max_length) {
+  std::string out;
+  for (char c : text) {
+    if (out.size() >= max_length) {
+      out += "...";
+      break;
+    }
+    const auto u = static_cast<unsigned char>(c);
+    out += (u >= 32 && u < 127) ? c : '?';
+  }
+  return out;
+}
 
 std::optional<std::string> diagnose_obj(const std::string& path) {
   std::ifstream in(path);
@@ -93,13 +106,15 @@ std::optional<std::string> diagnose_obj(const std::string& path) {
       for (std::size_t i = 1; i < tokens.size(); ++i) {
         long index = 0;
         if (!parse_integer(tokens[i].substr(0, tokens[i].find('/')), index) || index == 0)
-          return fmt::format("{}: '{}' is not a vertex index", where, tokens[i]);
+          return fmt::format("{}: '{}' is not a vertex index", where, printable(tokens[i]));
         if (index < 0 && -index > vertices)
           return fmt::format("{}: relative index {} reaches before the first vertex", where, index);
         if (index > 0) forward.push_back({line_no, index});
       }
     }
   }
+  if (vertices == 0)
+    return fmt::format("{}: no vertex ('v' line) found: not an OBJ file", path);
   for (const FaceRef& ref : forward)
     if (ref.index > vertices)
       return fmt::format("{}:{}: face refers to vertex {}, but the file defines only {}", path,
@@ -115,7 +130,8 @@ std::optional<std::string> diagnose_off(const std::string& path) {
   auto tokens = split_tokens(line);
   const std::string& magic = tokens[0];
   if (magic.size() < 3 || magic.compare(magic.size() - 3, 3, "OFF") != 0)
-    return fmt::format("{}:{}: an OFF file starts with 'OFF', found '{}'", path, line_no, magic);
+    return fmt::format("{}:{}: an OFF file starts with 'OFF', found '{}'", path, line_no,
+                       printable(magic, 20));
   tokens.erase(tokens.begin());
   if (tokens.empty()) {
     if (!next_content_line(in, line, line_no))
@@ -142,11 +158,25 @@ std::optional<std::string> diagnose_off(const std::string& path) {
     for (long i = 1; i <= k; ++i) {
       long index = 0;
       if (!parse_integer(tokens[i], index) || index < 0 || index >= nv)
-        return fmt::format("{}:{}: vertex index '{}' is not in 0..{}", path, line_no, tokens[i],
-                           nv - 1);
+        return fmt::format("{}:{}: vertex index '{}' is not in 0..{}", path, line_no,
+                           printable(tokens[i]), nv - 1);
     }
   }
   return std::nullopt;
+}
+
+std::optional<std::string> diagnose_ply(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  std::getline(in, line);
+  if (line.rfind("ply", 0) != 0)
+    return fmt::format("{}:1: a PLY file starts with 'ply', found '{}'", path, printable(line, 20));
+  long line_no = 1;
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (line.rfind("end_header", 0) == 0) return std::nullopt;
+  }
+  return fmt::format("{}: the PLY header has no 'end_header' (truncated?)", path);
 }
 
 std::optional<std::string> diagnose_stl(const std::string& path) {
@@ -204,7 +234,8 @@ std::optional<std::string> diagnose_msh(const std::string& path) {
     while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
     if (line.rfind("$End", 0) == 0) {
       if (line.substr(4) != open_section)
-        return fmt::format("{}:{}: '{}' does not close '${}'", path, line_no, line, open_section);
+        return fmt::format("{}:{}: '{}' does not close '${}'", path, line_no, printable(line),
+                           open_section);
       open_section.clear();
     } else {
       if (!open_section.empty())

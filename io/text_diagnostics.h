@@ -11,10 +11,16 @@
 
 namespace qm::io {
 
+/// `text` made safe for a one-line message: control and non-ASCII bytes become
+/// '?', and anything past `max_length` characters becomes "...".
+std::string printable(const std::string& text, std::size_t max_length = 60);
+
 /// "file.obj:12: ..." for the first malformed line of an OBJ file, if any.
 std::optional<std::string> diagnose_obj(const std::string& path);
 /// The same for OFF (header, counts, truncation, index ranges).
 std::optional<std::string> diagnose_off(const std::string& path);
+/// PLY: the magic word and the end of the header.
+std::optional<std::string> diagnose_ply(const std::string& path);
 /// Binary size against the announced triangle count, or the ASCII structure.
 std::optional<std::string> diagnose_stl(const std::string& path);
 /// Gmsh MSH sections: a missing $End... marker means a truncated file.

@@ -1,0 +1,154 @@
+#include "tests/support/test_meshes.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+namespace qm::test {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
+
+std::string shared_mesh(const std::string& name) { return std::string(QM_DATA_DIR) + "/" + name; }
+std::string example(const std::string& name) { return std::string(QM_EXAMPLES_DIR) + "/" + name; }
+
+std::string scratch_dir(const std::string& test_name) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("quadmesh-test-" + test_name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir.string();
+}
+
+TriangleSoup annulus(double r0, double r1, int rings, int sectors) {
+  TriangleSoup s;
+  for (int i = 0; i <= rings; ++i)
+    for (int j = 0; j < sectors; ++j) {
+      const double r = r0 + (r1 - r0) * i / rings, t = 2 * kPi * j / sectors;
+      s.points.emplace_back(r * std::cos(t), r * std::sin(t), 0.0);
+    }
+  auto id = [&](int i, int j) { return i * sectors + (j % sectors); };
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < sectors; ++j) {
+      s.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      s.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return s;
+}
+
+TriangleSoup disk(int rings, int sectors) {
+  TriangleSoup s = annulus(0.2, 1.0, rings, sectors);
+  const int center = static_cast<int>(s.points.size());
+  s.points.emplace_back(0.0, 0.0, 0.0);
+  for (int j = 0; j < sectors; ++j) s.triangles.push_back({center, j, (j + 1) % sectors});
+  return s;
+}
+
+TriangleSoup sphere() {
+  TriangleSoup s;
+  s.points = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  s.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                 {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  return s;
+}
+
+TriangleSoup torus(double R, double r, int u, int v) {
+  TriangleSoup s;
+  for (int i = 0; i < u; ++i)
+    for (int j = 0; j < v; ++j) {
+      const double a = 2 * kPi * i / u, b = 2 * kPi * j / v;
+      s.points.emplace_back((R + r * std::cos(b)) * std::cos(a), (R + r * std::cos(b)) * std::sin(a),
+                            r * std::sin(b));
+    }
+  auto id = [&](int i, int j) { return (i % u) * v + (j % v); };
+  for (int i = 0; i < u; ++i)
+    for (int j = 0; j < v; ++j) {
+      s.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      s.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return s;
+}
+
+TriangleSoup moebius(int segments) {
+  TriangleSoup s;
+  for (int i = 0; i < segments; ++i) {
+    const double a = 2 * kPi * i / segments;
+    for (double w : {-0.3, 0.3}) {
+      const double rr = 1.0 + w * std::cos(a / 2);
+      s.points.emplace_back(rr * std::cos(a), rr * std::sin(a), w * std::sin(a / 2));
+    }
+  }
+  for (int i = 0; i < segments; ++i) {
+    const int a0 = 2 * i, a1 = 2 * i + 1;
+    // the last strip closes with a half twist: bottom meets top
+    const bool last = i + 1 == segments;
+    const int b0 = last ? 1 : 2 * (i + 1), b1 = last ? 0 : 2 * (i + 1) + 1;
+    s.triangles.push_back({a0, b0, b1});
+    s.triangles.push_back({a0, b1, a1});
+  }
+  return s;
+}
+
+TriangleSoup two_components() {
+  TriangleSoup a = disk(2, 8), b = disk(3, 8);
+  const int offset = static_cast<int>(a.points.size());
+  for (Vec3 p : b.points) a.points.push_back(p + Vec3(5, 0, 0));
+  for (Triangle t : b.triangles) a.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  return a;
+}
+
+TriangleSoup bow_tie() {
+  TriangleSoup s;
+  s.points = {{0, 0, 0}, {1, 1, 0}, {1, -1, 0}, {-1, 1, 0}, {-1, -1, 0}};
+  s.triangles = {{0, 2, 1}, {0, 3, 4}};
+  return s;
+}
+
+TriangleSoup book() {
+  TriangleSoup s;
+  s.points = {{0, 0, 0}, {0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {-1, -1, 0}};
+  s.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
+  return s;
+}
+
+TriangleSoup grid(int n) {
+  TriangleSoup s;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) s.points.emplace_back(double(i) / n, double(j) / n, 0.0);
+  auto id = [&](int i, int j) { return i * (n + 1) + j; };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      s.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      s.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return s;
+}
+
+void write_obj(const TriangleSoup& soup, const std::string& path) {
+  std::ofstream out(path);
+  out.precision(17);
+  for (const Vec3& p : soup.points) out << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  for (const Triangle& t : soup.triangles)
+    out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+}
+
+const std::vector<ManifestEntry>& manifest() {
+  static const std::vector<ManifestEntry> entries = {
+      {"kitten-2holes.obj", 2458, 4880, 2, 1, -2, true},
+      {"kitten.off", 2500, 5000, 0, 1, 0, true},
+      {"fertility-3holes.obj", 4433, 8823, 3, 4, -9, true},
+      {"fertility.off", 4494, 9000, 0, 4, -6, true},
+      {"chipped-torus.obj", 560, 1102, 1, 1, -1, true},
+      {"flatmesh.off", 1936, 3646, 5, 0, -3, true},
+      {"pig.off", 468, 891, 7, 0, -5, true},
+      {"aqua-center.off", 5000, 9669, 3, 0, -1, true},
+      {"bunny-open.obj", 34834, 69451, 5, 0, -3, true},
+      {"bunny-open-large.obj", 139122, 277804, 5, 0, -3, true},
+      {"hinge.stl", 598, 1212, 0, 5, -8, true},
+      {"ogre-body-pinched.obj", 26034, 51992, 8, 1, -8, false},
+  };
+  return entries;
+}
+
+}  // namespace qm::test

@@ -1,0 +1,50 @@
+// Test inputs: generated surfaces with known topology, and the shared meshes of
+// ../shared/data with the numbers of MANIFEST.md.
+#pragma once
+
+#include "libquadmesh/core/triangle_soup.h"
+
+#include <string>
+#include <vector>
+
+namespace qm::test {
+
+/// Path of a shared mesh (../shared/data/NAME) or of an example (examples/NAME).
+std::string shared_mesh(const std::string& name);
+std::string example(const std::string& name);
+/// A fresh empty folder under the system temp dir for one test.
+std::string scratch_dir(const std::string& test_name);
+
+/// Planar annulus r0 <= |z| <= r1 with `rings` x `sectors` quads split in two
+/// (genus 0, 2 boundaries, chi 0).
+TriangleSoup annulus(double r0, double r1, int rings, int sectors);
+/// Planar unit disk: a fan-refined polar grid (genus 0, 1 boundary, chi 1).
+TriangleSoup disk(int rings, int sectors);
+/// Octahedron-based sphere (closed, genus 0, chi 2).
+TriangleSoup sphere();
+/// Torus of revolution (closed, genus 1, chi 0).
+TriangleSoup torus(double R, double r, int u, int v);
+/// Möbius strip (non-orientable, 1 boundary loop, chi 0).
+TriangleSoup moebius(int segments);
+/// Two disjoint disks.
+TriangleSoup two_components();
+/// Two triangles sharing one vertex only (non-manifold vertex).
+TriangleSoup bow_tie();
+/// Three triangles on one edge (non-manifold edge).
+TriangleSoup book();
+/// A square grid in the plane, n x n cells, each split in two (a disk).
+TriangleSoup grid(int n);
+
+/// Writes a soup as OBJ (for command-line tests).
+void write_obj(const TriangleSoup& soup, const std::string& path);
+
+/// Expected topology of a shared mesh (MANIFEST.md).
+struct ManifestEntry {
+  std::string file;
+  std::size_t vertices, faces;
+  int boundary_loops, genus, euler_characteristic;
+  bool manifold;
+};
+const std::vector<ManifestEntry>& manifest();
+
+}  // namespace qm::test

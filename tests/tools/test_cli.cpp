@@ -1,0 +1,180 @@
+// The quadmesh program as a user runs it: exit codes, one-line messages on
+// stderr that name the problem and where, and never a partial output file.
+#include "tests/support/test_meshes.h"
+
+#include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/wait.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace qm;
+
+namespace {
+
+struct Run {
+  int status = -1;
+  std::string out, err;
+  /// stderr without the progress lines ("[   0.01 s] ...")
+  std::vector<std::string> error_lines() const {
+    std::vector<std::string> lines;
+    std::istringstream in(err);
+    for (std::string line; std::getline(in, line);)
+      if (!line.empty() && line[0] != '[') lines.push_back(line);
+    return lines;
+  }
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+Run quadmesh(const std::string& args) {
+  static int counter = 0;
+  const std::string dir = test::scratch_dir("cli_io_" + std::to_string(counter++));
+  const std::string command = std::string("'") + QM_QUADMESH_BIN + "' " + args + " >'" + dir +
+                              "/out' 2>'" + dir + "/err' </dev/null";
+  const int raw = std::system(command.c_str());
+  Run run;
+  run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  run.out = slurp(dir + "/out");
+  run.err = slurp(dir + "/err");
+  return run;
+}
+
+std::string quoted(const std::string& path) { return "'" + path + "'"; }
+
+/// `quadmesh mesh INPUT -o OUT.msh` must fail with `status`, print one error line
+/// containing `needle`, and leave no output file.
+void expect_refusal(const std::string& input, int status, const std::string& needle) {
+  CAPTURE(input);
+  const std::string dir = test::scratch_dir("cli_refusal");
+  const std::string output = dir + "/out.msh";
+  const Run run = quadmesh("mesh " + quoted(input) + " -o " + quoted(output));
+  CHECK(run.status == status);
+  const auto lines = run.error_lines();
+  REQUIRE(lines.size() == 1);
+  CHECK(lines[0].rfind("quadmesh: error: ", 0) == 0);
+  CHECK(lines[0].find(needle) != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(output));
+  CHECK(std::filesystem::is_empty(dir));
+}
+
+}  // namespace
+
+TEST_CASE("info --json gives the MANIFEST numbers") {
+  for (const char* name : {"kitten-2holes.obj", "pig.off", "hinge.stl"}) {
+    CAPTURE(name);
+    const Run run = quadmesh("info --json " + quoted(test::shared_mesh(name)));
+    CHECK(run.status == 0);
+    const auto j = nlohmann::json::parse(run.out);
+    for (const auto& m : test::manifest()) {
+      if (m.file != name) continue;
+      CHECK(j["vertices"] == m.vertices);
+      CHECK(j["faces"] == m.faces);
+      CHECK(j["boundary_loops"] == m.boundary_loops);
+      CHECK(j["genus"] == m.genus);
+      CHECK(j["euler_characteristic"] == m.euler_characteristic);
+      CHECK(j["manifold"] == true);
+      CHECK(j["orientable"] == true);
+      CHECK(j["components"] == 1);
+      CHECK(j["supported"] == true);
+      CHECK(j["reason"].get<std::string>().find("supported") != std::string::npos);
+    }
+  }
+}
+
+TEST_CASE("info in words, and its exit status follows the verdict") {
+  const Run run = quadmesh("info " + quoted(test::shared_mesh("kitten-2holes.obj")));
+  CHECK(run.status == 0);
+  CHECK(run.out.find("genus 1 with 2 boundaries, chi = -2: supported; the doubled surface has "
+                     "genus 3") != std::string::npos);
+
+  const Run ogre = quadmesh("info --json " + quoted(test::shared_mesh("ogre-body-pinched.obj")));
+  CHECK(ogre.status == 3);
+  const auto j = nlohmann::json::parse(ogre.out);
+  CHECK(j["manifold"] == false);
+  CHECK(j["supported"] == false);
+  CHECK(j["boundary_loops"] == 8);
+  CHECK(j["genus"] == 1);
+  CHECK(j["euler_characteristic"] == -8);
+}
+
+TEST_CASE("mesh: a valid input passes every check, then 'not implemented yet' (exit 4)") {
+  expect_refusal(test::shared_mesh("kitten-2holes.obj"), 4, "not implemented yet");
+}
+
+TEST_CASE("mesh refuses bad files with exit 3") {
+  const std::string dir = test::scratch_dir("cli_bad_files");
+  std::ofstream(dir + "/empty.obj");
+  expect_refusal(dir + "/empty.obj", 3, "empty.obj: empty file");
+  expect_refusal(dir + "/missing.obj", 3, "missing.obj: no such file");
+
+  std::ofstream(dir + "/nan.obj") << "v 0 0 0\nv 1 0 0\nv 0 NaN 0\nf 1 2 3\n";
+  expect_refusal(dir + "/nan.obj", 3, "nan.obj:3: coordinate 'NaN' is not a finite number");
+
+  std::ofstream(dir + "/cut.off") << "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n";
+  expect_refusal(dir + "/cut.off", 3, "cut.off: the file ends after 1 of 2 faces");
+
+  {
+    std::ofstream noise(dir + "/noise.stl", std::ios::binary);
+    for (int i = 0; i < 1000; ++i) noise.put(static_cast<char>((i * 7919) & 0xff));
+  }
+  expect_refusal(dir + "/noise.stl", 3, "noise.stl:");
+
+  expect_refusal(test::shared_mesh("ogre-body-pinched.obj"), 3, "non-manifold vertex 16156 at (");
+}
+
+TEST_CASE("mesh refuses surfaces the method does not apply to with exit 4") {
+  const std::string dir = test::scratch_dir("cli_unsupported");
+  test::write_obj(test::disk(3, 12), dir + "/disk.obj");
+  expect_refusal(dir + "/disk.obj", 4, "chi = 1: not supported: a disk carries no holomorphic");
+  test::write_obj(test::sphere(), dir + "/sphere.obj");
+  expect_refusal(dir + "/sphere.obj", 4, "a sphere carries no holomorphic 1-form");
+  test::write_obj(test::moebius(16), dir + "/moebius.obj");
+  expect_refusal(dir + "/moebius.obj", 4, "non-orientable");
+  test::write_obj(test::two_components(), dir + "/two.obj");
+  expect_refusal(dir + "/two.obj", 4, "2 connected components");
+  test::write_obj(test::bow_tie(), dir + "/bowtie.obj");
+  expect_refusal(dir + "/bowtie.obj", 3, "non-manifold vertex 1 at (0, 0, 0)");  // OBJ counts from 1
+}
+
+TEST_CASE("--largest-component proceeds with the largest piece") {
+  const std::string dir = test::scratch_dir("cli_largest");
+  TriangleSoup soup = test::annulus(1, 2, 4, 16);
+  const TriangleSoup small = test::disk(2, 6);
+  const int offset = static_cast<int>(soup.points.size());
+  for (const Vec3& p : small.points) soup.points.push_back(p + Vec3(10, 0, 0));
+  for (const Triangle& t : small.triangles)
+    soup.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  test::write_obj(soup, dir + "/pieces.obj");
+  const Run info = quadmesh("info --json --largest-component " + quoted(dir + "/pieces.obj"));
+  CHECK(info.status == 0);
+  const auto j = nlohmann::json::parse(info.out);
+  CHECK(j["components"] == 1);
+  CHECK(j["components_dropped"] == 1);
+  CHECK(j["case"] == "annulus");
+}
+
+TEST_CASE("usage errors exit 2 before any work") {
+  CHECK(quadmesh("").status == 2);
+  CHECK(quadmesh("frobnicate x.obj").status == 2);
+  CHECK(quadmesh("mesh " + quoted(test::shared_mesh("pig.off"))).status == 2);  // no -o
+  CHECK(quadmesh("mesh " + quoted(test::shared_mesh("pig.off")) + " -o x.msh --size -1").status == 2);
+  const Run bad_ext = quadmesh("mesh " + quoted(test::shared_mesh("pig.off")) + " -o /tmp/out.xyz");
+  CHECK(bad_ext.status == 2);
+  CHECK(bad_ext.err.find("unknown output format '.xyz'") != std::string::npos);
+  const Run bad_dir =
+      quadmesh("mesh " + quoted(test::shared_mesh("pig.off")) + " -o /nonexistent/dir/out.msh");
+  CHECK(bad_dir.status == 2);
+  CHECK(bad_dir.err.find("does not exist") != std::string::npos);
+  const Run version = quadmesh("--version");
+  CHECK(version.status == 0);
+  CHECK(version.out.find("quadmesh") != std::string::npos);
+}
