@@ -24,7 +24,13 @@ struct MeshOptions {
   double msh_version = 4.1;
 };
 
+struct FormsOptions {
+  std::string input;
+  bool json = false;
+};
+
 int run_info(const InfoOptions& info, const CommonOptions& common);
 int run_mesh(const MeshOptions& mesh, const CommonOptions& common);
+int run_forms(const FormsOptions& forms, const CommonOptions& common);
 
 }  // namespace qm::tools

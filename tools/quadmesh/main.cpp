@@ -35,6 +35,12 @@ int run(int argc, char** argv) {
   info_cmd->add_option("FILE", info.input, "Input surface")->required();
   info_cmd->add_flag("--json", info.json, "Print one JSON object instead of text");
 
+  FormsOptions forms;
+  CLI::App* forms_cmd =
+      app.add_subcommand("forms", "Symmetric holomorphic differentials, their zeros and residuals");
+  forms_cmd->add_option("FILE", forms.input, "Input surface")->required();
+  forms_cmd->add_flag("--json", forms.json, "Print one JSON object instead of text");
+
   MeshOptions mesh;
   CLI::App* mesh_cmd = app.add_subcommand("mesh", "Quad-mesh a surface");
   mesh_cmd->add_option("FILE", mesh.input, "Input surface")->required();
@@ -47,7 +53,7 @@ int run(int argc, char** argv) {
       ->check(CLI::IsMember({4.1, 2.2}));
 
   // Options given after the subcommand apply too (quadmesh mesh f.obj -o g.msh --quiet).
-  for (CLI::App* sub : {info_cmd, mesh_cmd}) {
+  for (CLI::App* sub : {info_cmd, forms_cmd, mesh_cmd}) {
     sub->add_flag("-q,--quiet", common.quiet, "No progress lines on stderr");
     sub->add_flag("--largest-component", common.largest_component,
                   "Keep only the largest connected component of the input");
@@ -65,6 +71,7 @@ int run(int argc, char** argv) {
     return exit_usage;
   }
   if (info_cmd->parsed()) return run_info(info, common);
+  if (forms_cmd->parsed()) return run_forms(forms, common);
   return run_mesh(mesh, common);
 }
 

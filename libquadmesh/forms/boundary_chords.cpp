@@ -1,0 +1,50 @@
+#include "libquadmesh/forms/boundary_chords.h"
+
+#include "libquadmesh/topology/edge_incidence.h"
+
+#include <vector>
+
+namespace qm {
+
+std::size_t split_boundary_chords(TriangleSoup& soup) {
+  if (soup.point_labels.size() != soup.points.size()) {
+    soup.point_labels.resize(soup.points.size());
+    for (std::size_t i = 0; i < soup.points.size(); ++i) soup.point_labels[i] = static_cast<std::int64_t>(i);
+  }
+  if (soup.triangle_labels.size() != soup.triangles.size()) {
+    soup.triangle_labels.resize(soup.triangles.size());
+    for (std::size_t f = 0; f < soup.triangles.size(); ++f) soup.triangle_labels[f] = static_cast<std::int64_t>(f);
+  }
+  std::size_t splits = 0;
+  for (;;) {
+    const EdgeIncidence inc = edge_incidence(soup);
+    std::vector<char> on_boundary(soup.points.size(), 0);
+    for (std::size_t e = 0; e < inc.edge_count(); ++e)
+      if (inc.is_boundary(static_cast<int>(e))) on_boundary[inc.edges[e][0]] = on_boundary[inc.edges[e][1]] = 1;
+    std::vector<char> touched(soup.triangles.size(), 0);
+    std::size_t pass = 0;
+    for (std::size_t e = 0; e < inc.edge_count(); ++e) {
+      const auto [a, b] = inc.edges[e];
+      if (inc.valence(static_cast<int>(e)) != 2 || !on_boundary[a] || !on_boundary[b]) continue;
+      const int h0 = inc.halfedges[inc.offsets[e]], h1 = inc.halfedges[inc.offsets[e] + 1];
+      if (touched[h0 / 3] || touched[h1 / 3]) continue;  // next pass
+      const int m = static_cast<int>(soup.points.size());
+      soup.points.push_back((soup.points[a] + soup.points[b]) / 2);
+      soup.point_labels.push_back(-1);
+      for (int h : {h0, h1}) {
+        const int f = h / 3, k = h % 3;
+        const Triangle t = soup.triangles[f];
+        const int x = t[k], y = t[(k + 1) % 3], c = t[(k + 2) % 3];
+        soup.triangles[f] = {x, m, c};
+        soup.triangles.push_back({m, y, c});
+        soup.triangle_labels.push_back(soup.triangle_labels[f]);
+        touched[f] = 1;
+      }
+      ++pass;
+    }
+    splits += pass;
+    if (pass == 0) return splits;
+  }
+}
+
+}  // namespace qm

@@ -1,0 +1,177 @@
+// The forms stage (method.md sections 1-6): invariants with explicit tolerances.
+#include "io/read_surface.h"
+#include "libquadmesh/forms/boundary_chords.h"
+#include "libquadmesh/forms/harmonic_basis.h"
+#include "libquadmesh/forms/symmetric_forms.h"
+#include "libquadmesh/topology/applicability.h"
+#include "tests/support/test_meshes.h"
+
+#include <doctest/doctest.h>
+
+#include <map>
+
+using namespace qm;
+
+namespace {
+
+Mesh mesh_of(const TriangleSoup& soup) {
+  AnalyzedSurface s = analyze_topology(soup);
+  require_supported(s);
+  split_boundary_chords(s.soup);
+  return to_surface_mesh(s.soup);
+}
+
+Mesh load_mesh(const std::string& path) { return mesh_of(io::read_surface(path).soup); }
+
+/// One 1-to-4 midpoint subdivision.
+TriangleSoup subdivide(const TriangleSoup& in) {
+  TriangleSoup out;
+  out.points = in.points;
+  std::map<std::pair<int, int>, int> midpoint;
+  auto mid = [&](int a, int b) {
+    const auto key = std::minmax(a, b);
+    const auto found = midpoint.find(key);
+    if (found != midpoint.end()) return found->second;
+    out.points.push_back((in.points[a] + in.points[b]) / 2);
+    return midpoint[key] = static_cast<int>(out.points.size()) - 1;
+  };
+  for (const Triangle& t : in.triangles) {
+    const int ab = mid(t[0], t[1]), bc = mid(t[1], t[2]), ca = mid(t[2], t[0]);
+    out.triangles.push_back({t[0], ab, ca});
+    out.triangles.push_back({ab, t[1], bc});
+    out.triangles.push_back({ca, bc, t[2]});
+    out.triangles.push_back({ab, bc, ca});
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("doubling: counts, closedness, mirror-symmetric cotangent weights") {
+  const Mesh s = load_mesh(test::shared_mesh("kitten-2holes.obj"));
+  std::size_t boundary_vertices = 0;
+  for (auto v : s.vertices()) boundary_vertices += s.is_border(v) ? 1 : 0;
+  const DoubledSurface d = double_surface(s);
+  CHECK(d.mesh.number_of_vertices() == 2 * s.number_of_vertices() - boundary_vertices);
+  CHECK(d.mesh.number_of_faces() == 2 * s.number_of_faces());
+  for (auto h : d.mesh.halfedges()) REQUIRE_FALSE(d.mesh.is_border(h));
+  const long chi = static_cast<long>(d.mesh.number_of_vertices()) -
+                   static_cast<long>(d.mesh.number_of_edges()) +
+                   static_cast<long>(d.mesh.number_of_faces());
+  CHECK(chi == 2 * -2);  // chi(D) = 2 chi(S)
+  for (std::size_t v = 0; v < d.vertex_mirror.size(); ++v)
+    CHECK(d.vertex_mirror[d.vertex_mirror[v]] == static_cast<int>(v));
+  const Eigen::VectorXd w = cotan_weights(d.mesh);
+  double worst = 0;
+  for (Eigen::Index e = 0; e < w.size(); ++e)
+    worst = std::max(worst, std::abs(w[e] - w[d.edge_mirror[e]]));
+  CHECK(worst <= 1e-12 * w.cwiseAbs().maxCoeff());
+}
+
+TEST_CASE("boundary chords are split until none is left; topology is unchanged") {
+  // a 3 x 3 grid of split squares: its corner triangles are ears (their inner edges are chords)
+  TriangleSoup soup = test::grid(3);
+  const AnalyzedSurface before = analyze_topology(soup);
+  const std::size_t splits = split_boundary_chords(soup);
+  CHECK(splits > 0);
+  CHECK(split_boundary_chords(soup) == 0);
+  const AnalyzedSurface after = analyze_topology(soup);
+  CHECK(after.report.euler_characteristic == before.report.euler_characteristic);
+  CHECK(after.report.faces == before.report.faces + 2 * splits);
+  CHECK(after.report.vertices == before.report.vertices + splits);
+  CHECK(after.report.manifold());
+  CHECK(after.report.orientation.consistent);
+}
+
+TEST_CASE("cotangent Laplacian rows sum to zero, and it is symmetric") {
+  const DoubledSurface d = double_surface(load_mesh(test::shared_mesh("pig.off")));
+  const SparseMatrix L = cotan_laplacian(d.mesh, cotan_weights(d.mesh));
+  const Eigen::VectorXd rows = L * Eigen::VectorXd::Ones(L.cols());
+  const double scale = Eigen::MatrixXd(L).cwiseAbs().maxCoeff();
+  CHECK(rows.cwiseAbs().maxCoeff() <= 1e-12 * scale);
+  CHECK((Eigen::MatrixXd(L) - Eigen::MatrixXd(L).transpose()).cwiseAbs().maxCoeff() <= 1e-14 * scale);
+}
+
+TEST_CASE("cohomology basis: 2G closed forms; harmonic forms closed and co-closed") {
+  const DoubledSurface d = double_surface(load_mesh(test::shared_mesh("chipped-torus.obj")));
+  const CohomologyBasis c = cohomology_basis(d.mesh);
+  CHECK(c.forms.cols() == 2 * 2);  // g = 1, n = 1: G = 2
+  CHECK(max_face_curl(d.mesh, c.forms) <= 1e-12);
+  const HarmonicSolver solver(d.mesh, cotan_weights(d.mesh));
+  const Eigen::MatrixXd omega = solver.harmonic(c.forms);
+  CHECK(max_face_curl(d.mesh, omega) <= 1e-12);
+  CHECK(solver.coclosedness(omega) <= 1e-10);
+  CHECK(solver.coclosedness(c.forms) > 1e-3);  // the cohomology forms themselves are not harmonic
+}
+
+TEST_CASE("every shared open mesh: dimension, zero orders, boundary and symmetry residuals") {
+  for (const test::ManifestEntry& m : test::manifest()) {
+    if (!m.manifold || m.boundary_loops == 0 || m.faces > 100000) continue;
+    CAPTURE(m.file);
+    const SymmetricForms f = compute_symmetric_forms(load_mesh(test::shared_mesh(m.file)));
+    const int G = 2 * m.genus + m.boundary_loops - 1;
+    CHECK(f.doubled_genus == G);
+    CHECK(f.symmetric.dimension() == G);
+    CHECK(f.zeros.order_sum == -2 * m.euler_characteristic);
+    CHECK(f.residuals.boundary_imaginary < 1e-8);
+    CHECK(f.residuals.symmetry < 1e-8);
+    CHECK(f.residuals.closedness < 1e-12);
+    CHECK(f.residuals.coclosedness < 1e-9);
+    // the invariance spectrum is G ones and G zeros: phi* is an involutive isometry
+    for (Eigen::Index i = 0; i < f.symmetric.invariance_spectrum.size(); ++i) {
+      const double s = f.symmetric.invariance_spectrum[i];
+      CHECK(std::min(std::abs(s), std::abs(s - 1)) < 1e-8);
+    }
+  }
+}
+
+TEST_CASE("closed surfaces: the forms live on the surface itself") {
+  const SymmetricForms f = compute_symmetric_forms(load_mesh(test::shared_mesh("kitten.off")));
+  CHECK(f.doubled_genus == 1);
+  CHECK(f.symmetric.dimension() == 1);
+  CHECK(f.zeros.order_sum == 0);
+  CHECK(f.zeros.flipped_count == 0);
+  const SymmetricForms t = compute_symmetric_forms(mesh_of(test::torus(3.0, 1.0, 48, 24)));
+  CHECK(t.doubled_genus == 1);
+  CHECK(t.residuals.hodge_star_squared < 0.01);
+}
+
+TEST_CASE("the Hodge star residual shrinks under 1-to-4 subdivision") {
+  const TriangleSoup soup = io::read_surface(test::shared_mesh("chipped-torus.obj")).soup;
+  const double coarse = compute_symmetric_forms(mesh_of(soup)).residuals.hodge_star_squared;
+  const double fine = compute_symmetric_forms(mesh_of(subdivide(soup))).residuals.hodge_star_squared;
+  CAPTURE(coarse);
+  CAPTURE(fine);
+  CHECK(fine < 0.6 * coarse);
+}
+
+TEST_CASE("analytic annulus: |h| r is constant (h proportional to -i dz / z)") {
+  const Mesh mesh = mesh_of(test::annulus(1.0, 2.0, 24, 160));
+  const SymmetricForms f = compute_symmetric_forms(mesh);
+  REQUIRE(f.symmetric.dimension() == 1);
+  CHECK(f.zeros.order_sum == 0);
+  CHECK(f.zeros.flipped_count == 0);
+  const auto re = face_covectors(f.doubled.mesh, f.symmetric.real_part);
+  const auto im = face_covectors(f.doubled.mesh, f.symmetric.imaginary_part);
+  double lo = 1e300, hi = 0, sum = 0;
+  int count = 0;
+  for (auto face : mesh.faces()) {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (auto v : mesh.vertices_around_face(mesh.halfedge(face)))
+      c += Eigen::Vector3d(mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()) / 3;
+    const double r = c.head<2>().norm();
+    if (r < 1.2 || r > 1.8) continue;
+    const Eigen::Index i = static_cast<Eigen::Index>(face);
+    const double magnitude = std::hypot(re[0].row(i).norm(), im[0].row(i).norm()) / std::sqrt(2.0);
+    lo = std::min(lo, magnitude * r);
+    hi = std::max(hi, magnitude * r);
+    sum += magnitude * r;
+    ++count;
+    // real and imaginary covectors are orthogonal and of equal length (conformality)
+    CHECK(std::abs(re[0].row(i).dot(im[0].row(i))) <= 0.02 * re[0].row(i).squaredNorm());
+  }
+  const double spread = (hi - lo) / (sum / count);
+  CAPTURE(spread);
+  CHECK(spread < 0.02);
+  CHECK(f.residuals.hodge_star_squared < 1e-2);
+}

@@ -1,0 +1,85 @@
+#include "libquadmesh/core/mesh.h"
+#include "libquadmesh/forms/boundary_chords.h"
+#include "libquadmesh/forms/symmetric_forms.h"
+#include "tools/common/exit_codes.h"
+#include "tools/common/input_surface.h"
+#include "tools/quadmesh/commands.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+namespace qm::tools {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json zeros_json(const SymmetricForms& forms, const TriangleSoup& soup) {
+  Json list = Json::array();
+  for (const ZeroCluster& c : forms.zeros.clusters) {
+    if (c.order == 0 || c.representative < 0) continue;
+    if (static_cast<std::size_t>(c.representative) >= forms.doubled.input_vertices) continue;  // mirror copy
+    const Vec3& p = soup.points[static_cast<std::size_t>(c.representative)];
+    const std::int64_t label = soup.point_label(c.representative);
+    list.push_back({{"vertex", label >= 0 ? Json(label) : Json(nullptr)},
+                    {"position", {p.x(), p.y(), p.z()}},
+                    {"order", c.order},
+                    {"on_boundary", c.on_boundary},
+                    {"flipped_triangles", c.flipped_triangles}});
+  }
+  return list;
+}
+
+}  // namespace
+
+int run_forms(const FormsOptions& options, const CommonOptions& common) {
+  const Progress progress(common.quiet || options.json);
+  io::ReadOptions read;
+  read.cad_mesh_size = common.cad_mesh_size;
+  InputSurface in = load_input_surface(options.input, read, common.largest_component, progress);
+  require_supported(in.surface);
+  const std::size_t chords = split_boundary_chords(in.surface.soup);
+  progress.stage(fmt::format("computing symmetric holomorphic forms ({} boundary chords split)", chords));
+  const Mesh mesh = to_surface_mesh(in.surface.soup);
+  const SymmetricForms forms = compute_symmetric_forms(mesh);
+  const FormsResiduals& r = forms.residuals;
+
+  Json j;
+  j["doubled_genus"] = forms.doubled_genus;
+  j["symmetric_dimension"] = forms.symmetric.dimension();
+  j["euler_characteristic"] = in.surface.report.euler_characteristic;
+  j["boundary_chords_split"] = chords;
+  j["zeros_of"] = "symmetric basis form 1";
+  j["zeros"] = zeros_json(forms, in.surface.soup);
+  j["zero_order_sum_doubled"] = forms.zeros.order_sum;
+  j["flipped_triangles"] = forms.zeros.flipped_count;
+  j["residuals"] = {{"closedness", r.closedness},
+                    {"coclosedness", r.coclosedness},
+                    {"hodge_star_squared", r.hodge_star_squared},
+                    {"boundary_imaginary", r.boundary_imaginary},
+                    {"symmetry", r.symmetry}};
+  Json timings = Json::object();
+  for (const auto& [stage, seconds] : forms.timings) timings[stage] = seconds;
+  j["timings"] = timings;
+
+  if (options.json) {
+    fmt::print("{}\n", j.dump(2));
+  } else {
+    fmt::print("doubled genus       {}\n", forms.doubled_genus);
+    fmt::print("symmetric forms     {}\n", forms.symmetric.dimension());
+    fmt::print("zeros (form 1)      {} on the surface, orders summing to {} on the double "
+               "(expected 2G - 2 = {}), {} folded triangles\n",
+               j["zeros"].size(), forms.zeros.order_sum, 2 * forms.doubled_genus - 2,
+               forms.zeros.flipped_count);
+    fmt::print("residuals           closedness {:.2e}, co-closedness {:.2e}, |Lambda^2 + I| "
+               "{:.3g}, boundary Im {:.2e}, symmetry {:.2e}\n",
+               r.closedness, r.coclosedness, r.hodge_star_squared, r.boundary_imaginary,
+               r.symmetry);
+    double total = 0;
+    for (const auto& t : forms.timings) total += t.second;
+    fmt::print("time                {:.3f} s\n", total);
+  }
+  return exit_ok;
+}
+
+}  // namespace qm::tools
