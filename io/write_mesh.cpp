@@ -1,6 +1,7 @@
 #include "io/write_mesh.h"
 
 #include "io/atomic_file.h"
+#include "io/gmsh_model.h"
 #include "io/gmsh_session.h"
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/core/mesh.h"
@@ -39,6 +40,13 @@ int gmsh_face_type(std::size_t n) {
 
 void write_with_gmsh(const std::string& path, const OutputMesh& mesh, const WriteOptions& options) {
   GmshSession session;
+  add_to_gmsh_model(mesh);
+  write_gmsh_model(path, options, session);
+}
+
+}  // namespace
+
+std::vector<std::size_t> add_to_gmsh_model(const OutputMesh& mesh) {
   gmsh::model::add("quadmesh");
   const int surface = gmsh::model::addDiscreteEntity(2);
   std::vector<std::size_t> node_tags(mesh.points.size());
@@ -48,12 +56,16 @@ void write_with_gmsh(const std::string& path, const OutputMesh& mesh, const Writ
   for (const Vec3& p : mesh.points) coords.insert(coords.end(), {p.x(), p.y(), p.z()});
   gmsh::model::mesh::addNodes(2, surface, node_tags, coords);
 
+  // faces are numbered in input order: element tag of face i is face_tags[i]
+  std::vector<std::size_t> face_tags(mesh.faces.size());
   std::size_t next_element = 1;
   for (std::size_t corners : {std::size_t{3}, std::size_t{4}}) {
     std::vector<std::size_t> tags, nodes;
-    for (const auto& f : mesh.faces) {
+    for (std::size_t i = 0; i < mesh.faces.size(); ++i) {
+      const auto& f = mesh.faces[i];
       gmsh_face_type(f.size());
       if (f.size() != corners) continue;
+      face_tags[i] = next_element;
       tags.push_back(next_element++);
       for (int v : f) nodes.push_back(static_cast<std::size_t>(v) + 1);
     }
@@ -71,9 +83,24 @@ void write_with_gmsh(const std::string& path, const OutputMesh& mesh, const Writ
     const int physical = gmsh::model::addPhysicalGroup(1, {curve});
     gmsh::model::setPhysicalName(1, physical, group.name);
   }
+  for (const PointGroup& group : mesh.point_groups) {
+    std::vector<int> entities;
+    for (int p : group.points) {
+      const int entity = gmsh::model::addDiscreteEntity(0);
+      gmsh::model::mesh::addElementsByType(entity, 15, {next_element++},
+                                           {static_cast<std::size_t>(p) + 1});
+      entities.push_back(entity);
+    }
+    const int physical = gmsh::model::addPhysicalGroup(0, entities);
+    gmsh::model::setPhysicalName(0, physical, group.name);
+  }
   const int physical = gmsh::model::addPhysicalGroup(2, {surface});
   gmsh::model::setPhysicalName(2, physical, mesh.surface_group);
+  return face_tags;
+}
 
+void write_gmsh_model(const std::string& path, const WriteOptions& options,
+                      const GmshSession& session) {
   gmsh::option::setNumber("Mesh.MshFileVersion", options.msh_version);
   gmsh::option::setNumber("Mesh.Binary", options.binary ? 1 : 0);
   gmsh::option::setNumber("Mesh.SaveAll", 0);
@@ -84,8 +111,6 @@ void write_with_gmsh(const std::string& path, const OutputMesh& mesh, const Writ
   const std::string error = session.first_error();
   if (!error.empty()) fail(fmt::format("{}: Gmsh could not write it: {}", path, error));
 }
-
-}  // namespace
 
 void check_output_path(const std::string& path) {
   namespace fs = std::filesystem;

@@ -17,12 +17,19 @@ struct LineGroup {
   std::vector<std::array<int, 2>> edges;  ///< point indices
 };
 
+/// A named set of points written as point elements (zeros, singular vertices).
+struct PointGroup {
+  std::string name;
+  std::vector<int> points;
+};
+
 /// What gets written: points, faces of 3 or 4 corners (counter-clockwise seen from
-/// the surface's front), line groups, and the name of the surface's group.
+/// the surface's front), line and point groups, and the name of the surface's group.
 struct OutputMesh {
   std::vector<Vec3> points;
   std::vector<std::vector<int>> faces;
   std::vector<LineGroup> line_groups;
+  std::vector<PointGroup> point_groups;
   std::string surface_group = "surface";
 };
 

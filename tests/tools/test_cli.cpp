@@ -178,3 +178,40 @@ TEST_CASE("usage errors exit 2 before any work") {
   CHECK(version.status == 0);
   CHECK(version.out.find("quadmesh") != std::string::npos);
 }
+
+TEST_CASE("forms --json: dimension, zero orders, residuals; -o writes Gmsh views") {
+  const std::string dir = test::scratch_dir("cli_forms");
+  const std::string views = dir + "/views.msh";
+  const Run run = quadmesh("forms --json " + quoted(test::shared_mesh("kitten-2holes.obj")) + " -o " + quoted(views));
+  CHECK(run.status == 0);
+  const auto j = nlohmann::json::parse(run.out);
+  CHECK(j["doubled_genus"] == 3);
+  CHECK(j["symmetric_dimension"] == 3);
+  CHECK(j["zero_order_sum_doubled"] == 4);  // -2 chi
+  CHECK(j["residuals"]["boundary_imaginary"].get<double>() < 1e-8);
+  CHECK(j["residuals"]["closedness"].get<double>() < 1e-12);
+  CHECK(j["residuals"]["hodge_star_squared"].get<double>() < 0.1);
+  int order_sum = 0;
+  for (const auto& z : j["zeros"]) order_sum += z["order"].get<int>() * (z["on_boundary"].get<bool>() ? 1 : 2);
+  CHECK(order_sum == 4);
+  for (const char* stage : {"doubling", "factorization", "harmonic", "hodge_star", "symmetric_basis"})
+    CHECK(j["timings"].contains(stage));
+
+  const std::string text = slurp(views);
+  auto count = [&](const std::string& needle) {
+    std::size_t n = 0;
+    for (auto at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
+    return n;
+  };
+  CHECK(count("$ElementData\n") == 3);      // one vector field per symmetric form
+  CHECK(count("$ElementNodeData\n") == 6);  // Re and Im of each integral
+  CHECK(count("$Nodes\n") == 1);            // the mesh is written once
+  CHECK(text.find("\"boundary_1\"") != std::string::npos);
+  CHECK(text.find("0 3 \"zeros\"") != std::string::npos);
+
+  const Run bad = quadmesh("forms " + quoted(test::shared_mesh("kitten-2holes.obj")) + " -o " + quoted(dir + "/v.vtk"));
+  CHECK(bad.status == 2);
+  CHECK(bad.err.find("must be a .msh file") != std::string::npos);
+  const Run disk = quadmesh("forms " + quoted(test::shared_mesh("kitten-2holes.obj") + ".missing"));
+  CHECK(disk.status == 3);
+}

@@ -1,8 +1,22 @@
 #include "tools/common/input_surface.h"
 
+#include "io/write_mesh.h"
+
 #include <fmt/format.h>
 
 namespace qm::tools {
+
+bool output_path_usable(const std::string& path, io::Format only) {
+  try {
+    io::check_output_path(path);
+    if (only != io::Format::unknown && io::format_of(path) != only)
+      throw Error(ErrorCode::bad_input, fmt::format("{}: this output must be a .msh file", path));
+  } catch (const Error& e) {
+    fmt::print(stderr, "quadmesh: error: {}\n", e.what());
+    return false;
+  }
+  return true;
+}
 
 InputSurface load_input_surface(const std::string& path, const io::ReadOptions& read,
                                 bool largest_only, const Progress& progress) {

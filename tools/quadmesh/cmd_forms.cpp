@@ -1,5 +1,7 @@
 #include "libquadmesh/core/mesh.h"
+#include "io/write_views.h"
 #include "libquadmesh/forms/boundary_chords.h"
+#include "libquadmesh/forms/cut_integration.h"
 #include "libquadmesh/forms/symmetric_forms.h"
 #include "tools/common/exit_codes.h"
 #include "tools/common/input_surface.h"
@@ -14,11 +16,21 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
+/// The zeros listed on S: clusters with a nonzero order whose representative is a
+/// vertex of S (a mirror pair is listed once, by its + member).
+std::vector<const ZeroCluster*> surface_zeros(const SymmetricForms& forms) {
+  std::vector<const ZeroCluster*> out;
+  for (const ZeroCluster& c : forms.zeros.clusters)
+    if (c.order != 0 && c.representative >= 0 &&
+        static_cast<std::size_t>(c.representative) < forms.doubled.input_vertices)
+      out.push_back(&c);
+  return out;
+}
+
 Json zeros_json(const SymmetricForms& forms, const TriangleSoup& soup) {
   Json list = Json::array();
-  for (const ZeroCluster& c : forms.zeros.clusters) {
-    if (c.order == 0 || c.representative < 0) continue;
-    if (static_cast<std::size_t>(c.representative) >= forms.doubled.input_vertices) continue;  // mirror copy
+  for (const ZeroCluster* zero : surface_zeros(forms)) {
+    const ZeroCluster& c = *zero;
     const Vec3& p = soup.points[static_cast<std::size_t>(c.representative)];
     const std::int64_t label = soup.point_label(c.representative);
     list.push_back({{"vertex", label >= 0 ? Json(label) : Json(nullptr)},
@@ -30,12 +42,50 @@ Json zeros_json(const SymmetricForms& forms, const TriangleSoup& soup) {
   return list;
 }
 
+/// The input triangulation with the forms as Gmsh views (method.md section 6 figures).
+void write_form_views(const std::string& path, const SymmetricForms& forms,
+                      const AnalyzedSurface& surface) {
+  const Mesh& D = forms.doubled.mesh;
+  const std::size_t faces = forms.doubled.input_faces;
+  io::OutputMesh mesh;
+  mesh.points = surface.soup.points;
+  for (std::size_t f = 0; f < faces; ++f) {
+    const auto c = face_corners(D, Mesh::Face_index(static_cast<Mesh::size_type>(f)));
+    mesh.faces.push_back({c[0], c[1], c[2]});
+  }
+  const auto& loops = surface.report.boundary.loops;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    io::LineGroup group{fmt::format("boundary_{}", l), {}};
+    for (std::size_t i = 0; i < loops[l].size(); ++i)
+      group.edges.push_back({loops[l][i], loops[l][(i + 1) % loops[l].size()]});
+    mesh.line_groups.push_back(std::move(group));
+  }
+  io::PointGroup zeros{"zeros", {}};
+  for (const ZeroCluster* c : surface_zeros(forms)) zeros.points.push_back(c->representative);
+  if (!zeros.points.empty()) mesh.point_groups.push_back(std::move(zeros));
+
+  std::vector<io::FaceVectorView> vectors;
+  std::vector<io::CornerScalarView> scalars;
+  const auto re = face_covectors(D, forms.symmetric.real_part);
+  for (int k = 0; k < forms.symmetric.dimension(); ++k) {
+    vectors.push_back({fmt::format("form {}: Re h (vector per triangle)", k + 1),
+                       re[static_cast<std::size_t>(k)].topRows(static_cast<Eigen::Index>(faces))});
+    scalars.push_back({fmt::format("form {}: Re of the integral (cut surface)", k + 1),
+                       integrate_on_cut_surface(D, forms.symmetric.real_part.col(k), faces)});
+    scalars.push_back({fmt::format("form {}: Im of the integral (cut surface)", k + 1),
+                       integrate_on_cut_surface(D, forms.symmetric.imaginary_part.col(k), faces)});
+  }
+  io::write_views(path, mesh, vectors, scalars);
+}
+
 }  // namespace
 
 int run_forms(const FormsOptions& options, const CommonOptions& common) {
   const Progress progress(common.quiet || options.json);
   io::ReadOptions read;
   read.cad_mesh_size = common.cad_mesh_size;
+  if (!options.views.empty() && !output_path_usable(options.views, io::Format::msh))
+    return exit_usage;
   InputSurface in = load_input_surface(options.input, read, common.largest_component, progress);
   require_supported(in.surface);
   const std::size_t chords = split_boundary_chords(in.surface.soup);
@@ -62,6 +112,10 @@ int run_forms(const FormsOptions& options, const CommonOptions& common) {
   for (const auto& [stage, seconds] : forms.timings) timings[stage] = seconds;
   j["timings"] = timings;
 
+  if (!options.views.empty()) {
+    progress.stage(fmt::format("writing the views to {}", options.views));
+    write_form_views(options.views, forms, in.surface);
+  }
   if (options.json) {
     fmt::print("{}\n", j.dump(2));
   } else {

@@ -8,12 +8,7 @@
 namespace qm::tools {
 
 int run_mesh(const MeshOptions& mesh, const CommonOptions& common) {
-  try {
-    io::check_output_path(mesh.output);
-  } catch (const Error& e) {  // a wrong destination is a usage error, found before any work
-    fmt::print(stderr, "quadmesh: error: {}\n", e.what());
-    return exit_usage;
-  }
+  if (!output_path_usable(mesh.output)) return exit_usage;
   const Progress progress(common.quiet);
   io::ReadOptions read;
   read.cad_mesh_size = common.cad_mesh_size;

@@ -27,6 +27,7 @@ struct MeshOptions {
 struct FormsOptions {
   std::string input;
   bool json = false;
+  std::string views;  ///< -o: Gmsh views file (.msh), empty for none
 };
 
 int run_info(const InfoOptions& info, const CommonOptions& common);

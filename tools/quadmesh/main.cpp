@@ -40,6 +40,8 @@ int run(int argc, char** argv) {
       app.add_subcommand("forms", "Symmetric holomorphic differentials, their zeros and residuals");
   forms_cmd->add_option("FILE", forms.input, "Input surface")->required();
   forms_cmd->add_flag("--json", forms.json, "Print one JSON object instead of text");
+  forms_cmd->add_option("-o,--output", forms.views,
+                        "Write the input with the forms as Gmsh views (.msh) to this file");
 
   MeshOptions mesh;
   CLI::App* mesh_cmd = app.add_subcommand("mesh", "Quad-mesh a surface");
