@@ -3,12 +3,14 @@
 #include "libquadmesh/forms/boundary_chords.h"
 #include "libquadmesh/forms/cut_integration.h"
 #include "libquadmesh/forms/harmonic_basis.h"
+#include "libquadmesh/forms/remesh.h"
 #include "libquadmesh/forms/symmetric_forms.h"
 #include "libquadmesh/topology/applicability.h"
 #include "tests/support/test_meshes.h"
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <map>
 
 using namespace qm;
@@ -218,4 +220,57 @@ TEST_CASE("integration on the cut surface: a harmonic form jumps by its period a
       const double jump = std::abs(x - list.front());
       CHECK(std::min(jump, std::abs(jump - period)) < 1e-9 * period);
     }
+}
+
+namespace {
+/// Distance from p to the segment ab.
+double segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+  return (a + t * ab - p).norm();
+}
+}  // namespace
+
+TEST_CASE("--remesh cures poor triangulations: pig and hinge reach ||Lambda^2 + I|| <= 0.1") {
+  for (const char* name : {"pig.off", "hinge.stl"}) {
+    CAPTURE(name);
+    const AnalyzedSurface before = analyze_topology(io::read_surface(test::shared_mesh(name)).soup);
+    const double raw = compute_symmetric_forms(mesh_of(before.soup)).residuals.hodge_star_squared;
+    CHECK(raw > 0.3);  // the documented poor starting point
+    const AnalyzedSurface after = analyze_topology(remesh_isotropic(before.soup));
+    CHECK(after.report.euler_characteristic == before.report.euler_characteristic);
+    CHECK(after.report.boundary_loop_count() == before.report.boundary_loop_count());
+    CHECK(after.report.genus == before.report.genus);
+    CHECK(after.report.manifold());
+    const SymmetricForms f = compute_symmetric_forms(mesh_of(after.soup));
+    CHECK(f.residuals.hodge_star_squared <= 0.1);
+    CHECK(f.zeros.order_sum == 2 * f.doubled_genus - 2);
+  }
+}
+
+TEST_CASE("--remesh keeps the boundary polyline: old corners kept, new points on old segments") {
+  const AnalyzedSurface before = analyze_topology(io::read_surface(test::shared_mesh("pig.off")).soup);
+  const AnalyzedSurface after = analyze_topology(remesh_isotropic(before.soup));
+  std::vector<std::pair<Vec3, Vec3>> segments;
+  for (const auto& loop : before.report.boundary.loops)
+    for (std::size_t i = 0; i < loop.size(); ++i)
+      segments.push_back({before.soup.points[loop[i]], before.soup.points[loop[(i + 1) % loop.size()]]});
+  const double scale = mean_edge_length(before.soup);
+  for (const auto& loop : after.report.boundary.loops)
+    for (int p : loop) {
+      double best = 1e300;
+      for (const auto& [a, b] : segments) best = std::min(best, segment_distance(after.soup.points[p], a, b));
+      CHECK(best < 1e-9 * scale);
+    }
+  std::size_t kept = 0, corners = 0;
+  for (const auto& loop : before.report.boundary.loops)
+    for (int p : loop) {
+      ++corners;
+      for (const Vec3& q : after.soup.points)
+        if ((q - before.soup.points[p]).norm() < 1e-12 * scale) {
+          ++kept;
+          break;
+        }
+    }
+  CHECK(kept == corners);
 }

@@ -2,6 +2,8 @@
 #include "io/write_views.h"
 #include "libquadmesh/forms/boundary_chords.h"
 #include "libquadmesh/forms/cut_integration.h"
+#include "libquadmesh/forms/remesh.h"
+#include "libquadmesh/quality/triangle_quality.h"
 #include "libquadmesh/forms/symmetric_forms.h"
 #include "tools/common/exit_codes.h"
 #include "tools/common/input_surface.h"
@@ -88,6 +90,17 @@ int run_forms(const FormsOptions& options, const CommonOptions& common) {
     return exit_usage;
   InputSurface in = load_input_surface(options.input, read, common.largest_component, progress);
   require_supported(in.surface);
+  const TriangleQuality input_quality = triangle_quality(in.surface.soup);
+  if (options.remesh || options.remesh_size > 0) {
+    RemeshOptions remesh;
+    remesh.target_edge_length = options.remesh_size;
+    progress.stage(fmt::format("remeshing isotropically (target edge length {:.4g})",
+                               remesh.target_edge_length > 0 ? remesh.target_edge_length
+                                                             : 0.4 * mean_edge_length(in.surface.soup)));
+    in.surface = analyze_topology(remesh_isotropic(in.surface.soup, remesh));
+    require_supported(in.surface);
+  }
+  const TriangleQuality quality = triangle_quality(in.surface.soup);
   const std::size_t chords = split_boundary_chords(in.surface.soup);
   progress.stage(fmt::format("computing symmetric holomorphic forms ({} boundary chords split)", chords));
   const Mesh mesh = to_surface_mesh(in.surface.soup);
@@ -99,6 +112,13 @@ int run_forms(const FormsOptions& options, const CommonOptions& common) {
   j["symmetric_dimension"] = forms.symmetric.dimension();
   j["euler_characteristic"] = in.surface.report.euler_characteristic;
   j["boundary_chords_split"] = chords;
+  auto quality_json = [](const TriangleQuality& q) {
+    return Json{{"triangles", q.triangles}, {"min_angle_deg", q.min_angle_deg},
+                {"max_angle_deg", q.max_angle_deg}, {"slivers", q.slivers}, {"obtuse", q.obtuse}};
+  };
+  j["input_triangulation"] = quality_json(input_quality);
+  j["remeshed"] = options.remesh || options.remesh_size > 0;
+  j["triangulation"] = quality_json(quality);
   j["zeros_of"] = "symmetric basis form 1";
   j["zeros"] = zeros_json(forms, in.surface.soup);
   j["zero_order_sum_doubled"] = forms.zeros.order_sum;
@@ -112,6 +132,12 @@ int run_forms(const FormsOptions& options, const CommonOptions& common) {
   for (const auto& [stage, seconds] : forms.timings) timings[stage] = seconds;
   j["timings"] = timings;
 
+  if (r.hodge_star_squared > 0.1)
+    fmt::print(stderr,
+               "quadmesh: warning: ||Lambda^2 + I|| = {:.3g} > 0.1: the forms are inaccurate on this "
+               "triangulation ({} slivers under 5 degrees, {} obtuse of {} triangles){}\n",
+               r.hodge_star_squared, quality.slivers, quality.obtuse, quality.triangles,
+               j["remeshed"].get<bool>() ? "; try a smaller --remesh-size" : "; try --remesh");
   if (!options.views.empty()) {
     progress.stage(fmt::format("writing the views to {}", options.views));
     write_form_views(options.views, forms, in.surface);

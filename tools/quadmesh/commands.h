@@ -28,6 +28,8 @@ struct FormsOptions {
   std::string input;
   bool json = false;
   std::string views;  ///< -o: Gmsh views file (.msh), empty for none
+  bool remesh = false;       ///< isotropic remeshing first
+  double remesh_size = 0.0;  ///< its target edge length; 0: 0.4 x the mean edge length
 };
 
 int run_info(const InfoOptions& info, const CommonOptions& common);

@@ -42,6 +42,11 @@ int run(int argc, char** argv) {
   forms_cmd->add_flag("--json", forms.json, "Print one JSON object instead of text");
   forms_cmd->add_option("-o,--output", forms.views,
                         "Write the input with the forms as Gmsh views (.msh) to this file");
+  forms_cmd->add_flag("--remesh", forms.remesh,
+                      "Remesh isotropically first (boundary kept): cures slivers and coarse obtuse meshes");
+  forms_cmd->add_option("--remesh-size", forms.remesh_size,
+                        "Target edge length of --remesh (default: 0.4 x the mean edge length)")
+      ->check(CLI::PositiveNumber);
 
   MeshOptions mesh;
   CLI::App* mesh_cmd = app.add_subcommand("mesh", "Quad-mesh a surface");

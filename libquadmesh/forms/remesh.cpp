@@ -1,0 +1,53 @@
+#include "libquadmesh/forms/remesh.h"
+
+#include "libquadmesh/core/mesh.h"
+
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/remesh.h>
+
+#include <iterator>
+
+namespace qm {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+double mean_edge_length(const TriangleSoup& soup) {
+  double sum = 0;
+  for (const Triangle& t : soup.triangles)
+    for (int k = 0; k < 3; ++k) sum += (soup.points[t[k]] - soup.points[t[(k + 1) % 3]]).norm();
+  return soup.triangles.empty() ? 0.0 : sum / (3.0 * static_cast<double>(soup.triangles.size()));
+}
+
+TriangleSoup remesh_isotropic(const TriangleSoup& soup, const RemeshOptions& options) {
+  const double target =
+      options.target_edge_length > 0 ? options.target_edge_length : 0.4 * mean_edge_length(soup);
+  Mesh mesh = to_surface_mesh(soup);
+  auto constrained = mesh.add_property_map<Mesh::Edge_index, bool>("e:boundary", false).first;
+  std::vector<Mesh::Halfedge_index> border;
+  PMP::border_halfedges(faces(mesh), mesh, std::back_inserter(border));
+  std::vector<Mesh::Edge_index> border_edges;
+  for (Mesh::Halfedge_index h : border) {
+    constrained[mesh.edge(h)] = true;
+    border_edges.push_back(mesh.edge(h));
+  }
+  // split the boundary first so that protected edges are not longer than the target
+  PMP::split_long_edges(border_edges, target, mesh, PMP::parameters::edge_is_constrained_map(constrained));
+  PMP::isotropic_remeshing(faces(mesh), target, mesh,
+                           PMP::parameters::number_of_iterations(static_cast<unsigned>(options.iterations))
+                               .edge_is_constrained_map(constrained)
+                               .protect_constraints(true));
+  mesh.collect_garbage();
+  TriangleSoup out;
+  out.points.reserve(mesh.number_of_vertices());
+  for (Mesh::Vertex_index v : mesh.vertices())
+    out.points.emplace_back(mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z());
+  for (Mesh::Face_index f : mesh.faces()) {
+    Triangle t{};
+    int k = 0;
+    for (Mesh::Vertex_index v : mesh.vertices_around_face(mesh.halfedge(f))) t[k++] = static_cast<int>(v);
+    out.triangles.push_back(t);
+  }
+  return out;
+}
+
+}  // namespace qm
