@@ -3,12 +3,14 @@
 #include "libquadmesh/forms/boundary_chords.h"
 #include "libquadmesh/forms/cut_integration.h"
 #include "libquadmesh/forms/harmonic_basis.h"
+#include "libquadmesh/forms/named_loops.h"
 #include "libquadmesh/forms/remesh.h"
 #include "libquadmesh/forms/symmetric_forms.h"
 #include "libquadmesh/topology/applicability.h"
 #include "tests/support/test_meshes.h"
 
 #include <doctest/doctest.h>
+#include <Eigen/SVD>
 
 #include <algorithm>
 #include <map>
@@ -273,4 +275,52 @@ TEST_CASE("--remesh keeps the boundary polyline: old corners kept, new points on
         }
     }
   CHECK(kept == corners);
+}
+
+TEST_CASE("named loops: n boundaries, n - 1 bridges, 2g independent handle loops") {
+  for (const char* name : {"kitten-2holes.obj", "fertility-3holes.obj", "chipped-torus.obj", "flatmesh.off"}) {
+    CAPTURE(name);
+    const test::ManifestEntry* m = nullptr;
+    for (const auto& e : test::manifest())
+      if (e.file == name) m = &e;
+    REQUIRE(m != nullptr);
+    const Mesh s = load_mesh(test::shared_mesh(name));
+    const NamedLoops loops = named_loops(s);
+    CHECK(static_cast<int>(loops.boundaries.size()) == m->boundary_loops);
+    CHECK(static_cast<int>(loops.bridges.size()) == m->boundary_loops - 1);
+    CHECK(static_cast<int>(loops.handles.size()) == 2 * m->genus);
+    auto adjacent = [&](int a, int b) {
+      return s.halfedge(Mesh::Vertex_index(a), Mesh::Vertex_index(b)) != Mesh::null_halfedge();
+    };
+    for (const auto& loop : loops.handles)
+      for (std::size_t i = 0; i < loop.size(); ++i) CHECK(adjacent(loop[i], loop[(i + 1) % loop.size()]));
+    for (std::size_t k = 0; k < loops.bridges.size(); ++k) {
+      const auto& path = loops.bridges[k];
+      for (std::size_t i = 0; i + 1 < path.size(); ++i) CHECK(adjacent(path[i], path[i + 1]));
+      const auto& b0 = loops.boundaries[0];
+      const auto& bk = loops.boundaries[k + 1];
+      CHECK(std::find(b0.begin(), b0.end(), path.front()) != b0.end());
+      CHECK(std::find(bk.begin(), bk.end(), path.back()) != bk.end());
+    }
+    // the handle loops are independent cycles: their periods of the harmonic forms on
+    // the double (S+ is embedded in D with the same vertex numbers) have rank 2g
+    if (m->genus > 0) {
+      const SymmetricForms f = compute_symmetric_forms(s);
+      const Mesh& D = f.doubled.mesh;
+      Eigen::MatrixXd periods(static_cast<Eigen::Index>(loops.handles.size()), f.harmonic.cols());
+      for (std::size_t l = 0; l < loops.handles.size(); ++l) {
+        Eigen::RowVectorXd sum = Eigen::RowVectorXd::Zero(f.harmonic.cols());
+        const auto& loop = loops.handles[l];
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+          const auto h = D.halfedge(Mesh::Vertex_index(loop[i]), Mesh::Vertex_index(loop[(i + 1) % loop.size()]));
+          const double sign = D.halfedge(D.edge(h), 0) == h ? 1.0 : -1.0;
+          sum += sign * f.harmonic.row(static_cast<Eigen::Index>(D.edge(h)));
+        }
+        periods.row(static_cast<Eigen::Index>(l)) = sum;
+      }
+      Eigen::JacobiSVD<Eigen::MatrixXd> svd(periods);
+      const auto& sv = svd.singularValues();
+      CHECK(sv[sv.size() - 1] > 1e-3 * sv[0]);
+    }
+  }
 }

@@ -207,7 +207,11 @@ TEST_CASE("forms --json: dimension, zero orders, residuals; -o writes Gmsh views
   CHECK(count("$ElementNodeData\n") == 6);  // Re and Im of each integral
   CHECK(count("$Nodes\n") == 1);            // the mesh is written once
   CHECK(text.find("\"boundary_1\"") != std::string::npos);
-  CHECK(text.find("0 3 \"zeros\"") != std::string::npos);
+  CHECK(text.find("\"bridge_1\"") != std::string::npos);  // kitten: 2 boundaries, genus 1
+  CHECK(text.find("\"handle_0\"") != std::string::npos);
+  CHECK(text.find("\"handle_1\"") != std::string::npos);
+  CHECK(text.find("\"handle_2\"") == std::string::npos);
+  CHECK(text.find("\"zeros\"") != std::string::npos);
 
   const Run bad = quadmesh("forms " + quoted(test::shared_mesh("kitten-2holes.obj")) + " -o " + quoted(dir + "/v.vtk"));
   CHECK(bad.status == 2);

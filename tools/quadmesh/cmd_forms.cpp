@@ -2,6 +2,7 @@
 #include "io/write_views.h"
 #include "libquadmesh/forms/boundary_chords.h"
 #include "libquadmesh/forms/cut_integration.h"
+#include "libquadmesh/forms/named_loops.h"
 #include "libquadmesh/forms/remesh.h"
 #include "libquadmesh/quality/triangle_quality.h"
 #include "libquadmesh/forms/symmetric_forms.h"
@@ -46,7 +47,7 @@ Json zeros_json(const SymmetricForms& forms, const TriangleSoup& soup) {
 
 /// The input triangulation with the forms as Gmsh views (method.md section 6 figures).
 void write_form_views(const std::string& path, const SymmetricForms& forms,
-                      const AnalyzedSurface& surface) {
+                      const AnalyzedSurface& surface, const Mesh& mesh_s) {
   const Mesh& D = forms.doubled.mesh;
   const std::size_t faces = forms.doubled.input_faces;
   io::OutputMesh mesh;
@@ -55,13 +56,20 @@ void write_form_views(const std::string& path, const SymmetricForms& forms,
     const auto c = face_corners(D, Mesh::Face_index(static_cast<Mesh::size_type>(f)));
     mesh.faces.push_back({c[0], c[1], c[2]});
   }
-  const auto& loops = surface.report.boundary.loops;
-  for (std::size_t l = 0; l < loops.size(); ++l) {
-    io::LineGroup group{fmt::format("boundary_{}", l), {}};
-    for (std::size_t i = 0; i < loops[l].size(); ++i)
-      group.edges.push_back({loops[l][i], loops[l][(i + 1) % loops[l].size()]});
-    mesh.line_groups.push_back(std::move(group));
-  }
+  const NamedLoops loops = named_loops(mesh_s);
+  auto add_lines = [&](const char* kind, const std::vector<std::vector<int>>& list, bool closed) {
+    for (std::size_t l = 0; l < list.size(); ++l) {
+      // loops count from 0; bridge k (from 1) joins boundary 0 to boundary k
+      io::LineGroup group{fmt::format("{}_{}", kind, closed ? l : l + 1), {}};
+      const auto& p = list[l];
+      for (std::size_t i = 0; i + 1 < p.size(); ++i) group.edges.push_back({p[i], p[i + 1]});
+      if (closed && p.size() > 2) group.edges.push_back({p.back(), p.front()});
+      mesh.line_groups.push_back(std::move(group));
+    }
+  };
+  add_lines("boundary", loops.boundaries, true);
+  add_lines("bridge", loops.bridges, false);
+  add_lines("handle", loops.handles, true);
   io::PointGroup zeros{"zeros", {}};
   for (const ZeroCluster* c : surface_zeros(forms)) zeros.points.push_back(c->representative);
   if (!zeros.points.empty()) mesh.point_groups.push_back(std::move(zeros));
@@ -140,7 +148,7 @@ int run_forms(const FormsOptions& options, const CommonOptions& common) {
                j["remeshed"].get<bool>() ? "; try a smaller --remesh-size" : "; try --remesh");
   if (!options.views.empty()) {
     progress.stage(fmt::format("writing the views to {}", options.views));
-    write_form_views(options.views, forms, in.surface);
+    write_form_views(options.views, forms, in.surface, mesh);
   }
   if (options.json) {
     fmt::print("{}\n", j.dump(2));
