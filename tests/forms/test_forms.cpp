@@ -10,7 +10,7 @@
 #include "tests/support/test_meshes.h"
 
 #include <doctest/doctest.h>
-#include <Eigen/SVD>
+#include <Eigen/Dense>
 
 #include <algorithm>
 #include <map>
@@ -323,4 +323,68 @@ TEST_CASE("named loops: n boundaries, n - 1 bridges, 2g independent handle loops
       CHECK(sv[sv.size() - 1] > 1e-3 * sv[0]);
     }
   }
+}
+
+namespace {
+/// Real symplectic Gram-Schmidt: columns a_1..a_g, b_1..b_g with S^T A S = [[0, I], [-I, 0]]
+/// for an invertible antisymmetric A.
+Eigen::MatrixXd symplectic_basis(const Eigen::MatrixXd& A) {
+  const Eigen::Index n = A.rows(), g = n / 2;
+  std::vector<Eigen::VectorXd> rest;
+  for (Eigen::Index i = 0; i < n; ++i) rest.push_back(Eigen::VectorXd::Unit(n, i));
+  Eigen::MatrixXd S(n, n);
+  for (Eigen::Index k = 0; k < g; ++k) {
+    // the pair (u, w) with the largest pairing keeps the reduction well conditioned
+    std::size_t iu = 0, iw = 1;
+    double best = 0;
+    for (std::size_t i = 0; i < rest.size(); ++i)
+      for (std::size_t j = i + 1; j < rest.size(); ++j) {
+        const double p = std::abs(rest[i].dot(A * rest[j]));
+        if (p > best) best = p, iu = i, iw = j;
+      }
+    const Eigen::VectorXd a = rest[iu];
+    const Eigen::VectorXd b = rest[iw] / a.dot(A * rest[iw]);
+    rest.erase(rest.begin() + static_cast<long>(std::max(iu, iw)));
+    rest.erase(rest.begin() + static_cast<long>(std::min(iu, iw)));
+    for (Eigen::VectorXd& v : rest) v = v - v.dot(A * b) * a + v.dot(A * a) * b;
+    S.col(k) = a;
+    S.col(g + k) = b;
+  }
+  return S;
+}
+}  // namespace
+
+TEST_CASE("closed genus 2: integral wedge pairing and a Riemann period matrix") {
+  // the double of a pair of pants (a plate with two holes) is a closed genus-2 surface
+  io::ReadOptions options;
+  options.cad_mesh_size = 3.0;
+  const DoubledSurface pants = double_surface(mesh_of(io::read_surface(test::example("plate-two-holes.geo"), options).soup));
+  const SymmetricForms f = compute_symmetric_forms(pants.mesh);
+  REQUIRE(f.doubled_genus == 2);
+  const Eigen::MatrixXd& A = f.star.wedge;
+  // the wedge of PL closed forms is topological: an integer, unimodular, antisymmetric matrix
+  const Eigen::MatrixXd rounded = A.array().round().matrix();
+  CHECK((A - rounded).cwiseAbs().maxCoeff() < 1e-8);
+  CHECK(std::abs(std::abs(rounded.determinant()) - 1.0) < 1e-9);
+  CHECK((A + A.transpose()).cwiseAbs().maxCoeff() < 1e-9);
+
+  const Eigen::MatrixXd S = symplectic_basis(A);
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(4, 4);
+  J.topRightCorner(2, 2) = Eigen::MatrixXd::Identity(2, 2);
+  J.bottomLeftCorner(2, 2) = -Eigen::MatrixXd::Identity(2, 2);
+  CHECK((S.transpose() * A * S - J).cwiseAbs().maxCoeff() < 1e-9);
+
+  // periods of the holomorphic basis h_j = omega(x_j) + i *omega(x_j) in canonical coordinates
+  REQUIRE(f.symmetric.dimension() == 2);
+  const Eigen::MatrixXd& X = f.symmetric.coefficients;
+  const Eigen::MatrixXcd C = X.cast<std::complex<double>>() +
+                             std::complex<double>(0, 1) * (f.star.lambda * X).cast<std::complex<double>>();
+  const Eigen::MatrixXcd Q = S.inverse().cast<std::complex<double>>() * C;
+  const Eigen::MatrixXcd Pa = Q.topRows(2), Pb = Q.bottomRows(2);
+  const Eigen::MatrixXcd tau = Pb * Pa.inverse();
+  CAPTURE(tau);
+  CHECK((tau - tau.transpose()).norm() < 1e-8 * tau.norm());  // symmetric (Riemann's first relation)
+  const Eigen::MatrixXd im = (tau.imag() + tau.imag().transpose()) / 2;
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(im);
+  CHECK(eig.eigenvalues().minCoeff() > 0);  // positive definite (the second relation)
 }
