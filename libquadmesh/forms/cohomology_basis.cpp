@@ -1,40 +1,19 @@
 #include "libquadmesh/forms/cohomology_basis.h"
 
 #include "libquadmesh/core/error.h"
+#include "libquadmesh/forms/edge_forms.h"
+#include "libquadmesh/forms/spanning_tree.h"
 
 #include <cmath>
 #include <queue>
 
 namespace qm {
 
-namespace {
-/// +1 when h is halfedge(edge(h), 0), else -1.
-double orientation(const Mesh& m, Mesh::Halfedge_index h) {
-  return m.halfedge(m.edge(h), 0) == h ? 1.0 : -1.0;
-}
-}  // namespace
-
 CohomologyBasis cohomology_basis(const Mesh& m) {
   QM_ASSERT(m.number_of_removed_edges() == 0);
   const std::size_t nE = m.number_of_edges();
-  std::vector<char> in_tree(nE, 0), crossed_by_cotree(nE, 0);
-
-  // primal spanning tree, breadth-first from vertex 0
-  std::vector<char> reached(m.number_of_vertices(), 0);
-  std::queue<Mesh::Vertex_index> vq;
-  vq.push(Mesh::Vertex_index(0));
-  reached[0] = 1;
-  while (!vq.empty()) {
-    const Mesh::Vertex_index v = vq.front();
-    vq.pop();
-    for (Mesh::Halfedge_index h : m.halfedges_around_target(m.halfedge(v))) {
-      const Mesh::Vertex_index u = m.source(h);
-      if (reached[u]) continue;
-      reached[u] = 1;
-      in_tree[m.edge(h)] = 1;
-      vq.push(u);
-    }
-  }
+  const std::vector<char> in_tree = vertex_spanning_tree(m).edge_used;
+  std::vector<char> crossed_by_cotree(nE, 0);
   // dual spanning tree avoiding the primal tree; remember each face's parent edge
   const std::size_t nF = m.number_of_faces();
   std::vector<int> parent_halfedge(nF, -1);  // halfedge of f on the edge to its parent
@@ -73,8 +52,8 @@ CohomologyBasis cohomology_basis(const Mesh& m) {
     const Mesh::Halfedge_index ph(static_cast<Mesh::size_type>(parent_halfedge[f]));
     Eigen::RowVectorXd sum = Eigen::RowVectorXd::Zero(k);
     for (Mesh::Halfedge_index h : m.halfedges_around_face(m.halfedge(f)))
-      if (h != ph) sum += orientation(m, h) * basis.forms.row(static_cast<Eigen::Index>(m.edge(h)));
-    basis.forms.row(static_cast<Eigen::Index>(m.edge(ph))) = -orientation(m, ph) * sum;
+      if (h != ph) sum += along_sign(m, h) * basis.forms.row(static_cast<Eigen::Index>(m.edge(h)));
+    basis.forms.row(static_cast<Eigen::Index>(m.edge(ph))) = -along_sign(m, ph) * sum;
   }
   return basis;
 }
@@ -84,7 +63,7 @@ double max_face_curl(const Mesh& m, const Eigen::MatrixXd& forms) {
   for (Mesh::Face_index f : m.faces()) {
     Eigen::RowVectorXd sum = Eigen::RowVectorXd::Zero(forms.cols());
     for (Mesh::Halfedge_index h : m.halfedges_around_face(m.halfedge(f)))
-      sum += orientation(m, h) * forms.row(static_cast<Eigen::Index>(m.edge(h)));
+      sum += along_sign(m, h) * forms.row(static_cast<Eigen::Index>(m.edge(h)));
     worst = std::max(worst, sum.cwiseAbs().maxCoeff());
   }
   return worst;

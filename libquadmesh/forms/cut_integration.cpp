@@ -1,5 +1,7 @@
 #include "libquadmesh/forms/cut_integration.h"
 
+#include "libquadmesh/forms/edge_forms.h"
+
 #include <queue>
 #include <vector>
 
@@ -15,10 +17,7 @@ std::array<int, 3> face_corners(const Mesh& m, Mesh::Face_index f) {
 
 Eigen::MatrixX3d integrate_on_cut_surface(const Mesh& m, const Eigen::VectorXd& form,
                                           std::size_t face_count) {
-  auto along = [&](Mesh::Halfedge_index h) {
-    const double v = form[static_cast<Eigen::Index>(m.edge(h))];
-    return m.halfedge(m.edge(h), 0) == h ? v : -v;
-  };
+  auto along = [&](Mesh::Halfedge_index h) { return value_along(m, form, h); };
   Eigen::MatrixX3d values = Eigen::MatrixX3d::Zero(static_cast<Eigen::Index>(face_count), 3);
   std::vector<char> done(face_count, 0);
   // Fills face f from a known value at the target of halfedge `from` (a halfedge of f).

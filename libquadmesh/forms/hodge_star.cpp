@@ -1,6 +1,7 @@
 #include "libquadmesh/forms/hodge_star.h"
 
 #include "libquadmesh/core/error.h"
+#include "libquadmesh/forms/edge_forms.h"
 
 #include <Eigen/Dense>
 
@@ -8,11 +9,6 @@ namespace qm {
 
 namespace {
 Eigen::Vector3d vec(const Point3& p) { return {p.x(), p.y(), p.z()}; }
-double value_along(const Mesh& m, const Eigen::MatrixXd& forms, Mesh::Halfedge_index h,
-                   Eigen::Index k) {
-  const double v = forms(static_cast<Eigen::Index>(m.edge(h)), k);
-  return m.halfedge(m.edge(h), 0) == h ? v : -v;
-}
 }  // namespace
 
 std::vector<Eigen::MatrixX3d> face_covectors(const Mesh& m, const Eigen::MatrixXd& forms) {
@@ -30,8 +26,8 @@ std::vector<Eigen::MatrixX3d> face_covectors(const Mesh& m, const Eigen::MatrixX
     G << e0.dot(e0), e0.dot(e1), e0.dot(e1), e1.dot(e1);
     const Eigen::Matrix2d Ginv = G.inverse();
     for (Eigen::Index k = 0; k < forms.cols(); ++k) {
-      const double w0 = value_along(m, forms, h0, k);
-      const double w1 = w0 + value_along(m, forms, h1, k);  // i -> j -> k
+      const double w0 = value_along(m, forms.col(k), h0);
+      const double w1 = w0 + value_along(m, forms.col(k), h1);  // i -> j -> k
       const Eigen::Vector2d ab = Ginv * Eigen::Vector2d(w0, w1);
       out[static_cast<std::size_t>(k)].row(static_cast<Eigen::Index>(f)) = ab[0] * e0 + ab[1] * e1;
     }

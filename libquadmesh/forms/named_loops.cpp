@@ -1,5 +1,7 @@
 #include "libquadmesh/forms/named_loops.h"
 
+#include "libquadmesh/forms/spanning_tree.h"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -68,25 +70,11 @@ std::vector<std::vector<int>> bridge_paths(const Mesh& m, const std::vector<std:
 
 std::vector<std::vector<int>> handle_loops(const Mesh& m, const std::vector<int>& loop_of_halfedge,
                                            std::size_t loop_count) {
-  const std::size_t nV = m.number_of_vertices(), nF = m.number_of_faces();
-  // primal spanning tree (breadth-first from vertex 0), with depths for the paths
-  std::vector<int> parent(nV, -1), depth(nV, -1);
-  std::vector<char> in_tree(m.number_of_edges(), 0);
-  std::queue<int> vq;
-  vq.push(0);
-  depth[0] = 0;
-  while (!vq.empty()) {
-    const int v = vq.front();
-    vq.pop();
-    for (Mesh::Halfedge_index h : m.halfedges_around_target(m.halfedge(Mesh::Vertex_index(v)))) {
-      const int u = static_cast<int>(m.source(h));
-      if (depth[u] >= 0) continue;
-      depth[u] = depth[v] + 1;
-      parent[u] = v;
-      in_tree[m.edge(h)] = 1;
-      vq.push(u);
-    }
-  }
+  const std::size_t nF = m.number_of_faces();
+  const VertexTree tree = vertex_spanning_tree(m);
+  const std::vector<int>& parent = tree.parent;
+  const std::vector<int>& depth = tree.depth;
+  const std::vector<char>& in_tree = tree.edge_used;
   // dual spanning tree over faces and one virtual face per hole, avoiding the tree
   auto node_of = [&](Mesh::Halfedge_index h) {
     return m.is_border(h) ? static_cast<int>(nF) + loop_of_halfedge[h] : static_cast<int>(m.face(h));

@@ -1,6 +1,7 @@
 #include "libquadmesh/forms/zeros.h"
 
 #include "libquadmesh/core/union_find.h"
+#include "libquadmesh/forms/edge_forms.h"
 
 #include <cmath>
 #include <complex>
@@ -11,9 +12,7 @@ FormZeros form_zeros(const DoubledSurface& d, const Eigen::VectorXd& re, const E
   using C = std::complex<double>;
   const Mesh& m = d.mesh;
   auto along = [&](Mesh::Halfedge_index h) {
-    const auto e = static_cast<Eigen::Index>(m.edge(h));
-    const C value(re[e], im[e]);
-    return m.halfedge(m.edge(h), 0) == h ? value : -value;
+    return C(value_along(m, re, h), value_along(m, im, h));
   };
   const std::size_t nV = m.number_of_vertices(), nF = m.number_of_faces();
   FormZeros z;
