@@ -18,4 +18,23 @@ Mesh to_surface_mesh(const TriangleSoup& soup) {
   return mesh;
 }
 
+TriangleSoup soup_of(const Mesh& mesh, const TriangleSoup& before) {
+  QM_ASSERT(mesh.number_of_removed_vertices() == 0 && mesh.number_of_removed_faces() == 0);
+  QM_ASSERT(mesh.number_of_vertices() >= before.points.size());
+  TriangleSoup out;
+  out.cad = before.cad;
+  for (Mesh::Vertex_index v : mesh.vertices()) {
+    out.points.emplace_back(mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z());
+    const std::size_t i = static_cast<std::size_t>(v);
+    out.point_labels.push_back(i < before.points.size() ? before.point_label(static_cast<int>(i)) : -1);
+  }
+  for (Mesh::Face_index f : mesh.faces()) {
+    Triangle t{};
+    int k = 0;
+    for (Mesh::Vertex_index v : mesh.vertices_around_face(mesh.halfedge(f))) t[k++] = static_cast<int>(v);
+    out.triangles.push_back(t);
+  }
+  return out;
+}
+
 }  // namespace qm

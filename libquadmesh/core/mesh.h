@@ -19,4 +19,8 @@ using Mesh = CGAL::Surface_mesh<Point3>;
 /// triangle f of the soup. Precondition: the soup passed assess_applicability.
 Mesh to_surface_mesh(const TriangleSoup& soup);
 
+/// The soup of a mesh without removed elements whose first vertices are those of
+/// `before` (same indices): their labels are kept, added vertices get label -1.
+TriangleSoup soup_of(const Mesh& mesh, const TriangleSoup& before);
+
 }  // namespace qm

@@ -37,16 +37,8 @@ TriangleSoup remesh_isotropic(const TriangleSoup& soup, const RemeshOptions& opt
                                .edge_is_constrained_map(constrained)
                                .protect_constraints(true));
   mesh.collect_garbage();
-  TriangleSoup out;
-  out.points.reserve(mesh.number_of_vertices());
-  for (Mesh::Vertex_index v : mesh.vertices())
-    out.points.emplace_back(mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z());
-  for (Mesh::Face_index f : mesh.faces()) {
-    Triangle t{};
-    int k = 0;
-    for (Mesh::Vertex_index v : mesh.vertices_around_face(mesh.halfedge(f))) t[k++] = static_cast<int>(v);
-    out.triangles.push_back(t);
-  }
+  // every point is new: none carries the file's numbering (label -1)
+  TriangleSoup out = soup_of(mesh, TriangleSoup{});
   return out;
 }
 

@@ -16,8 +16,8 @@ struct RemeshOptions {
 /// CGAL isotropic remeshing [Botsch & Kobbelt 2004] of an oriented manifold soup.
 /// Boundary edges are split to the target length and then protected: the boundary
 /// polyline is kept exactly. New vertices are projected onto the input surface.
-/// Labels are dropped (the file's numbering no longer applies), and so is the CAD
-/// curve information. The topology (chi, boundary loops) is unchanged.
+/// Every point gets label -1 (the file's numbering no longer applies), and the CAD
+/// curve information is dropped. The topology (chi, boundary loops) is unchanged.
 TriangleSoup remesh_isotropic(const TriangleSoup& soup, const RemeshOptions& options = {});
 
 /// Mean edge length of a soup (each edge counted once per triangle side).

@@ -1,6 +1,7 @@
 #include "libquadmesh/core/mesh.h"
 #include "io/write_views.h"
 #include "libquadmesh/forms/boundary_chords.h"
+#include "libquadmesh/forms/cotan_repair.h"
 #include "libquadmesh/forms/cut_integration.h"
 #include "libquadmesh/forms/named_loops.h"
 #include "libquadmesh/forms/remesh.h"
@@ -108,6 +109,13 @@ int run_forms(const FormsOptions& options, const CommonOptions& common) {
     in.surface = analyze_topology(remesh_isotropic(in.surface.soup, remesh));
     require_supported(in.surface);
   }
+  CotanRepairReport repair;
+  if (options.repair) {
+    progress.stage("curing negative cotangent weights (flips and splits)");
+    Mesh repaired = to_surface_mesh(in.surface.soup);
+    repair = repair_cotan_weights(repaired);
+    in.surface.soup = soup_of(repaired, in.surface.soup);
+  }
   const TriangleQuality quality = triangle_quality(in.surface.soup);
   const std::size_t chords = split_boundary_chords(in.surface.soup);
   progress.stage(fmt::format("computing symmetric holomorphic forms ({} boundary chords split)", chords));
@@ -127,6 +135,12 @@ int run_forms(const FormsOptions& options, const CommonOptions& common) {
   j["input_triangulation"] = quality_json(input_quality);
   j["remeshed"] = options.remesh || options.remesh_size > 0;
   j["triangulation"] = quality_json(quality);
+  if (options.repair)
+    j["repair"] = {{"negative_weights_before", repair.negative_before},
+                   {"negative_weights_after", repair.negative_after},
+                   {"flips", repair.flips},
+                   {"interior_splits", repair.interior_splits},
+                   {"boundary_splits", repair.boundary_splits}};
   j["zeros_of"] = "symmetric basis form 1";
   j["zeros"] = zeros_json(forms, in.surface.soup);
   j["zero_order_sum_doubled"] = forms.zeros.order_sum;

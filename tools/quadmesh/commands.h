@@ -29,6 +29,7 @@ struct FormsOptions {
   bool json = false;
   std::string views;  ///< -o: Gmsh views file (.msh), empty for none
   bool remesh = false;       ///< isotropic remeshing first
+  bool repair = false;       ///< flips/splits curing negative cotangent weights
   double remesh_size = 0.0;  ///< its target edge length; 0: 0.4 x the mean edge length
 };
 

@@ -44,6 +44,8 @@ int run(int argc, char** argv) {
                         "Write the input with the forms as Gmsh views (.msh) to this file");
   forms_cmd->add_flag("--remesh", forms.remesh,
                       "Remesh isotropically first (boundary kept): cures slivers and coarse obtuse meshes");
+  forms_cmd->add_flag("--repair", forms.repair,
+                      "Cure negative cotangent weights: flip where flat, split elsewhere (after --remesh)");
   forms_cmd->add_option("--remesh-size", forms.remesh_size,
                         "Target edge length of --remesh (default: 0.4 x the mean edge length)")
       ->check(CLI::PositiveNumber);
