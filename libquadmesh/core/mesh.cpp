@@ -18,6 +18,14 @@ Mesh to_surface_mesh(const TriangleSoup& soup) {
   return mesh;
 }
 
+std::array<int, 3> face_corners(const Mesh& m, Mesh::Face_index f) {
+  std::array<int, 3> out{};
+  int k = 0;
+  for (Mesh::Halfedge_index h : m.halfedges_around_face(m.halfedge(f)))
+    if (k < 3) out[k++] = static_cast<int>(m.target(h));
+  return out;
+}
+
 TriangleSoup soup_of(const Mesh& mesh, const TriangleSoup& before) {
   QM_ASSERT(mesh.number_of_removed_vertices() == 0 && mesh.number_of_removed_faces() == 0);
   QM_ASSERT(mesh.number_of_vertices() >= before.points.size());
@@ -28,12 +36,7 @@ TriangleSoup soup_of(const Mesh& mesh, const TriangleSoup& before) {
     const std::size_t i = static_cast<std::size_t>(v);
     out.point_labels.push_back(i < before.points.size() ? before.point_label(static_cast<int>(i)) : -1);
   }
-  for (Mesh::Face_index f : mesh.faces()) {
-    Triangle t{};
-    int k = 0;
-    for (Mesh::Vertex_index v : mesh.vertices_around_face(mesh.halfedge(f))) t[k++] = static_cast<int>(v);
-    out.triangles.push_back(t);
-  }
+  for (Mesh::Face_index f : mesh.faces()) out.triangles.push_back(face_corners(mesh, f));
   return out;
 }
 

@@ -8,6 +8,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <array>
+
 namespace qm {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -18,6 +20,10 @@ using Mesh = CGAL::Surface_mesh<Point3>;
 /// a supported AnalyzedSurface). Vertex i and face f of the mesh are point i and
 /// triangle f of the soup. Precondition: the soup passed assess_applicability.
 Mesh to_surface_mesh(const TriangleSoup& soup);
+
+/// The vertices of triangle f in the order used for per-corner data and soups:
+/// target(h) for h around f starting at halfedge(f).
+std::array<int, 3> face_corners(const Mesh& mesh, Mesh::Face_index f);
 
 /// The soup of a mesh without removed elements whose first vertices are those of
 /// `before` (same indices): their labels are kept, added vertices get label -1.

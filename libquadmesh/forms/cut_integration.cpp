@@ -7,14 +7,6 @@
 
 namespace qm {
 
-std::array<int, 3> face_corners(const Mesh& m, Mesh::Face_index f) {
-  std::array<int, 3> out{};
-  int k = 0;
-  for (Mesh::Halfedge_index h : m.halfedges_around_face(m.halfedge(f)))
-    if (k < 3) out[k++] = static_cast<int>(m.target(h));
-  return out;
-}
-
 Eigen::MatrixX3d integrate_on_cut_surface(const Mesh& m, const Eigen::VectorXd& form,
                                           std::size_t face_count) {
   auto along = [&](Mesh::Halfedge_index h) { return value_along(m, form, h); };

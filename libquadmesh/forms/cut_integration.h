@@ -9,15 +9,9 @@
 
 #include <Eigen/Core>
 
-#include <array>
-
 namespace qm {
 
-/// The vertices of face f in the order used for per-corner data: target(h) for h
-/// around f starting at halfedge(f).
-std::array<int, 3> face_corners(const Mesh& mesh, Mesh::Face_index f);
-
-/// Per-corner values (face_count x 3, corners as face_corners) of the integral of
+/// Per-corner values (face_count x 3, corners as face_corners in core/mesh.h) of the integral of
 /// `form` (edge values along halfedge(e, 0)), 0 at the first corner of face 0.
 /// Faces are reached only across edges between faces < face_count.
 Eigen::MatrixX3d integrate_on_cut_surface(const Mesh& mesh, const Eigen::VectorXd& form,

@@ -18,9 +18,12 @@ double mean_edge_length(const TriangleSoup& soup) {
   return soup.triangles.empty() ? 0.0 : sum / (3.0 * static_cast<double>(soup.triangles.size()));
 }
 
+double remesh_target(const TriangleSoup& soup, const RemeshOptions& options) {
+  return options.target_edge_length > 0 ? options.target_edge_length : 0.4 * mean_edge_length(soup);
+}
+
 TriangleSoup remesh_isotropic(const TriangleSoup& soup, const RemeshOptions& options) {
-  const double target =
-      options.target_edge_length > 0 ? options.target_edge_length : 0.4 * mean_edge_length(soup);
+  const double target = remesh_target(soup, options);
   Mesh mesh = to_surface_mesh(soup);
   auto constrained = mesh.add_property_map<Mesh::Edge_index, bool>("e:boundary", false).first;
   std::vector<Mesh::Halfedge_index> border;

@@ -13,6 +13,9 @@ struct RemeshOptions {
   int iterations = 5;
 };
 
+/// The edge length remesh_isotropic aims at: the option, or its default.
+double remesh_target(const TriangleSoup& soup, const RemeshOptions& options);
+
 /// CGAL isotropic remeshing [Botsch & Kobbelt 2004] of an oriented manifold soup.
 /// Boundary edges are split to the target length and then protected: the boundary
 /// polyline is kept exactly. New vertices are projected onto the input surface.

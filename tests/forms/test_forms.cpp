@@ -3,6 +3,7 @@
 #include "libquadmesh/forms/boundary_chords.h"
 #include "libquadmesh/forms/cotan_repair.h"
 #include "libquadmesh/forms/cut_integration.h"
+#include "libquadmesh/forms/edge_forms.h"
 #include "libquadmesh/forms/harmonic_basis.h"
 #include "libquadmesh/forms/named_loops.h"
 #include "libquadmesh/forms/remesh.h"
@@ -314,8 +315,7 @@ TEST_CASE("named loops: n boundaries, n - 1 bridges, 2g independent handle loops
         const auto& loop = loops.handles[l];
         for (std::size_t i = 0; i < loop.size(); ++i) {
           const auto h = D.halfedge(Mesh::Vertex_index(loop[i]), Mesh::Vertex_index(loop[(i + 1) % loop.size()]));
-          const double sign = D.halfedge(D.edge(h), 0) == h ? 1.0 : -1.0;
-          sum += sign * f.harmonic.row(static_cast<Eigen::Index>(D.edge(h)));
+          sum += along_sign(D, h) * f.harmonic.row(static_cast<Eigen::Index>(D.edge(h)));
         }
         periods.row(static_cast<Eigen::Index>(l)) = sum;
       }

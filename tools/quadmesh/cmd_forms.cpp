@@ -100,12 +100,12 @@ int run_forms(const FormsOptions& options, const CommonOptions& common) {
   InputSurface in = load_input_surface(options.input, read, common.largest_component, progress);
   require_supported(in.surface);
   const TriangleQuality input_quality = triangle_quality(in.surface.soup);
-  if (options.remesh || options.remesh_size > 0) {
+  const bool remeshed = options.remesh || options.remesh_size > 0;
+  if (remeshed) {
     RemeshOptions remesh;
     remesh.target_edge_length = options.remesh_size;
     progress.stage(fmt::format("remeshing isotropically (target edge length {:.4g})",
-                               remesh.target_edge_length > 0 ? remesh.target_edge_length
-                                                             : 0.4 * mean_edge_length(in.surface.soup)));
+                               remesh_target(in.surface.soup, remesh)));
     in.surface = analyze_topology(remesh_isotropic(in.surface.soup, remesh));
     require_supported(in.surface);
   }
@@ -116,7 +116,8 @@ int run_forms(const FormsOptions& options, const CommonOptions& common) {
     repair = repair_cotan_weights(repaired);
     in.surface.soup = soup_of(repaired, in.surface.soup);
   }
-  const TriangleQuality quality = triangle_quality(in.surface.soup);
+  const TriangleQuality quality =
+      remeshed || options.repair ? triangle_quality(in.surface.soup) : input_quality;
   const std::size_t chords = split_boundary_chords(in.surface.soup);
   progress.stage(fmt::format("computing symmetric holomorphic forms ({} boundary chords split)", chords));
   const Mesh mesh = to_surface_mesh(in.surface.soup);
@@ -133,7 +134,7 @@ int run_forms(const FormsOptions& options, const CommonOptions& common) {
                 {"max_angle_deg", q.max_angle_deg}, {"slivers", q.slivers}, {"obtuse", q.obtuse}};
   };
   j["input_triangulation"] = quality_json(input_quality);
-  j["remeshed"] = options.remesh || options.remesh_size > 0;
+  j["remeshed"] = remeshed;
   j["triangulation"] = quality_json(quality);
   if (options.repair)
     j["repair"] = {{"negative_weights_before", repair.negative_before},
@@ -159,7 +160,7 @@ int run_forms(const FormsOptions& options, const CommonOptions& common) {
                "quadmesh: warning: ||Lambda^2 + I|| = {:.3g} > 0.1: the forms are inaccurate on this "
                "triangulation ({} slivers under 5 degrees, {} obtuse of {} triangles){}\n",
                r.hodge_star_squared, quality.slivers, quality.obtuse, quality.triangles,
-               j["remeshed"].get<bool>() ? "; try a smaller --remesh-size" : "; try --remesh");
+               remeshed ? "; try a smaller --remesh-size" : "; try --remesh");
   if (!options.views.empty()) {
     progress.stage(fmt::format("writing the views to {}", options.views));
     write_form_views(options.views, forms, in.surface, mesh);
