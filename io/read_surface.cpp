@@ -108,7 +108,9 @@ double triangulate_cad(const std::string& path, const ReadOptions& options,
   gmsh::model::getEntities(surfaces, 2);
   if (surfaces.empty()) fail(fmt::format("{}: the model has no surface to mesh", path));
   const double diagonal = bounding_box_diagonal();
-  const double quad_size = options.quad_size > 0 ? options.quad_size : diagonal / 60.0;
+  const double quad_size = options.quad_size > 0          ? options.quad_size
+                           : options.quad_size_relative > 0 ? options.quad_size_relative * diagonal
+                                                            : diagonal / 60.0;
   const double size = options.cad_mesh_size > 0 ? options.cad_mesh_size : quad_size / 3.0;
   if (has_surface_elements()) return 0.0;  // the script meshed itself
   gmsh::option::setNumber("Mesh.MeshSizeMax", size);

@@ -15,6 +15,9 @@ struct ReadOptions {
   /// The quad size the triangulation is for; 0 means 1/60 of the bounding-box
   /// diagonal (the mesher's default).
   double quad_size = 0.0;
+  /// The quad size as a fraction of the bounding-box diagonal (used when > 0 and
+  /// quad_size is 0).
+  double quad_size_relative = 0.0;
 };
 
 struct SurfaceFile {

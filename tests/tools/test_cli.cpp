@@ -106,8 +106,64 @@ TEST_CASE("info in words, and its exit status follows the verdict") {
   CHECK(j["euler_characteristic"] == -8);
 }
 
-TEST_CASE("mesh: a valid input passes every check, then 'not implemented yet' (exit 4)") {
-  expect_refusal(test::shared_mesh("kitten-2holes.obj"), 4, "not implemented yet");
+TEST_CASE("mesh: a closed surface passes every check, then 'not implemented yet' (exit 4)") {
+  const std::string dir = test::scratch_dir("cli_closed");
+  test::write_obj(test::torus(3, 1, 24, 12), dir + "/torus.obj");
+  expect_refusal(dir + "/torus.obj", 4, "closed surfaces is not implemented yet");
+}
+
+/// The issue 4 acceptance, through the program: report, output file, groups.
+void expect_quad_mesh(const std::string& input, const std::string& size, int chi, int loops,
+                      const std::vector<std::string>& curve_groups) {
+  CAPTURE(input);
+  const std::string dir = test::scratch_dir("cli_mesh");
+  const std::string output = dir + "/out.msh", report = dir + "/report.json";
+  const Run run = quadmesh("mesh " + quoted(input) + " -o " + quoted(output) + " --size " + size +
+                           " --report " + quoted(report));
+  REQUIRE(run.status == 0);
+  CHECK(run.out.find("irregular vertices") != std::string::npos);  // the summary
+  CHECK(run.err.find("] extracting the quads") != std::string::npos);  // progress lines
+  const auto j = nlohmann::json::parse(slurp(report));
+  const auto& q = j["quality"];
+  CHECK(q["triangles"] == 0);
+  CHECK(q["inverted"] == 0);
+  CHECK(q["euler_characteristic"] == chi);
+  CHECK(q["boundary_loops"] == loops);
+  CHECK(q["irregular_interior"] == j["expected"]["irregular_interior"]);
+  CHECK(q["min_scaled_jacobian"].get<double>() >= 0.3);
+  CHECK(q["angle_dev_mean"].get<double>() <= 5.0);
+  const double quads = q["quads"].get<double>(), target = j["expected"]["quads"].get<double>();
+  CHECK(std::abs(quads - target) <= 0.15 * target);
+  for (const char* key : {"forms", "quantization", "extraction", "total"}) CHECK(j["timings"].contains(key));
+  // the file read back by another command, with its physical groups
+  const Run back = quadmesh("quality " + quoted(output) + " --json");
+  REQUIRE(back.status == 0);
+  CHECK(nlohmann::json::parse(back.out)["quads"] == q["quads"]);
+  const std::string msh = slurp(output);
+  const std::string names = msh.substr(msh.find("$PhysicalNames"), msh.find("$EndPhysicalNames") - msh.find("$PhysicalNames"));
+  CHECK(names.find("\"surface\"") != std::string::npos);
+  for (const std::string& group : curve_groups) CHECK(names.find("\"" + group + "\"") != std::string::npos);
+}
+
+TEST_CASE("mesh: pure quads with the input's topology, quality and groups (plate, kitten)") {
+  expect_quad_mesh(test::example("plate-two-holes.geo"), "2", -1, 3, {"hole_left", "hole_right", "outer"});
+  expect_quad_mesh(test::shared_mesh("kitten-2holes.obj"), "1.5%", -2, 2, {"boundary_0", "boundary_1"});
+}
+
+TEST_CASE("mesh: bad options are usage errors, before any work") {
+  const std::string dir = test::scratch_dir("cli_mesh_options");
+  const std::string input = test::example("annulus.geo");
+  for (const char* options : {"--size -1", "--size 1.5%%", "--form 0", "--form x", "--quads 0"}) {
+    CAPTURE(options);
+    const Run run = quadmesh("mesh " + quoted(input) + " -o " + quoted(dir + "/out.msh") + " " + std::string(options));
+    CHECK(run.status == 2);
+    CHECK_FALSE(std::filesystem::exists(dir + "/out.msh"));
+  }
+  const Run coeffs = quadmesh("mesh " + quoted(input) + " -o " + quoted(dir + "/out.msh") + " --coeffs 1,2");
+  CHECK(coeffs.status == 3);
+  CHECK(coeffs.error_lines().size() == 1);
+  CHECK(coeffs.error_lines()[0].find("--coeffs has 2 values but the surface has 1 symmetric forms") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir + "/out.msh"));
 }
 
 TEST_CASE("mesh refuses bad files with exit 3") {
@@ -218,4 +274,32 @@ TEST_CASE("forms --json: dimension, zero orders, residuals; -o writes Gmsh views
   CHECK(bad.err.find("must be a .msh file") != std::string::npos);
   const Run disk = quadmesh("forms " + quoted(test::shared_mesh("kitten-2holes.obj") + ".missing"));
   CHECK(disk.status == 3);
+}
+
+TEST_CASE("quality --json: counts and scaled Jacobian of a quad grid; a missing file exits 3") {
+  const std::string dir = test::scratch_dir("cli_quality");
+  {
+    std::ofstream obj(dir + "/grid.obj");  // 3 x 2 unit squares
+    for (int j = 0; j <= 2; ++j)
+      for (int i = 0; i <= 3; ++i) obj << "v " << i << ' ' << j << " 0\n";
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 3; ++i) {
+        const int a = j * 4 + i + 1;  // OBJ counts from 1
+        obj << "f " << a << ' ' << a + 1 << ' ' << a + 5 << ' ' << a + 4 << '\n';
+      }
+  }
+  const Run run = quadmesh("quality " + quoted(dir + "/grid.obj") + " --json");
+  CHECK(run.status == 0);
+  const auto j = nlohmann::json::parse(run.out);
+  CHECK(j["quads"] == 6);
+  CHECK(j["vertices"] == 12);
+  CHECK(j["min_scaled_jacobian"].get<double>() == doctest::Approx(1.0).epsilon(1e-12));
+  CHECK(j["euler_characteristic"] == 1);
+  CHECK(j["boundary_loops"] == 1);
+  CHECK(j["hausdorff_rel"].is_null());  // no reference
+
+  const Run missing = quadmesh("quality " + quoted(dir + "/missing.obj"));
+  CHECK(missing.status == 3);
+  REQUIRE(missing.error_lines().size() == 1);
+  CHECK(missing.error_lines()[0].find("missing.obj: no such file") != std::string::npos);
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace qm::tools {
 
@@ -20,7 +21,14 @@ struct InfoOptions {
 struct MeshOptions {
   std::string input;
   std::string output;
+  std::string report;        ///< --report: JSON quality report, empty for none
   double size = 0.0;         ///< target quad edge length; 0: 1/60 of the bounding-box diagonal
+  double size_relative = 0.0;  ///< --size P%: P/100 of the bounding-box diagonal
+  std::size_t quads = 0;     ///< target quad count (wins over size)
+  int form = -1;             ///< -1: auto; else the symmetric basis form (from 0)
+  std::vector<double> coefficients;  ///< --coeffs
+  bool rotate = false;
+  double corner_angle_deg = 30.0;
   double msh_version = 4.1;
 };
 
@@ -33,8 +41,15 @@ struct FormsOptions {
   double remesh_size = 0.0;  ///< its target edge length; 0: 0.4 x the mean edge length
 };
 
+struct QualityOptions {
+  std::string input;
+  std::string reference;  ///< --reference: triangulated surface for the Hausdorff distance, or empty
+  bool json = false;
+};
+
 int run_info(const InfoOptions& info, const CommonOptions& common);
 int run_mesh(const MeshOptions& mesh, const CommonOptions& common);
 int run_forms(const FormsOptions& forms, const CommonOptions& common);
+int run_quality(const QualityOptions& quality, const CommonOptions& common);
 
 }  // namespace qm::tools

@@ -8,6 +8,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <string>
 
 namespace {
 
@@ -55,14 +56,55 @@ int run(int argc, char** argv) {
   mesh_cmd->add_option("FILE", mesh.input, "Input surface")->required();
   mesh_cmd->add_option("-o,--output", mesh.output, "Output mesh (format from the extension)")
       ->required();
-  mesh_cmd->add_option("--size", mesh.size,
-                       "Target quad edge length (default: 1/60 of the bounding-box diagonal)")
+  std::string size_text;
+  mesh_cmd->add_option("--size", size_text,
+                       "Target quad edge length, or P% of the bounding-box diagonal (default: 1/60 of it)")
+      ->check([](const std::string& v) {
+        try {
+          std::size_t used = 0;
+          const double x = std::stod(v, &used);
+          const bool percent = used + 1 == v.size() && v.back() == '%';
+          if (x > 0 && (used == v.size() || percent)) return std::string();
+        } catch (const std::exception&) {
+        }
+        return std::string("must be a positive length or a percentage such as 1.5%");
+      });
+  mesh_cmd->add_option("--quads", mesh.quads, "Target number of quads (instead of --size)")
       ->check(CLI::PositiveNumber);
+  std::string form_choice = "auto";
+  mesh_cmd->add_option("--form", form_choice,
+                       "The differential: auto (most uniform |h|) or K, the K-th symmetric basis form (from 1)")
+      ->check([](const std::string& v) {
+        if (v == "auto") return std::string();
+        try {
+          std::size_t used = 0;
+          if (std::stoi(v, &used) >= 1 && used == v.size()) return std::string();
+        } catch (const std::exception&) {
+        }
+        return std::string("must be auto or a positive integer");
+      });
+  mesh_cmd->add_option("--coeffs", mesh.coefficients,
+                       "Real coefficients c1,c2,... of h = sum c_k h_k over the symmetric basis")
+      ->delimiter(',')
+      ->excludes("--form");
+  mesh_cmd->add_flag("--rotate", mesh.rotate, "Use i*h: the same grid turned by 90 degrees");
+  mesh_cmd->add_option("--corner-angle", mesh.corner_angle_deg,
+                       "Boundary turning angle (degrees) above which a vertex is a corner put on the grid")
+      ->check(CLI::Range(0.0, 180.0));
+  mesh_cmd->add_option("--report", mesh.report, "Write a JSON report (quality, zeros, quantization, timings)");
   mesh_cmd->add_option("--msh-version", mesh.msh_version, "MSH output version: 4.1 or 2.2")
       ->check(CLI::IsMember({4.1, 2.2}));
 
+  QualityOptions quality;
+  CLI::App* quality_cmd =
+      app.add_subcommand("quality", "Quality of a quad mesh: scaled Jacobian, angles, valences, topology");
+  quality_cmd->add_option("MESH", quality.input, "Mesh to measure (triangles and quads)")->required();
+  quality_cmd->add_option("--reference", quality.reference,
+                          "Input surface for the two-sided Hausdorff distance");
+  quality_cmd->add_flag("--json", quality.json, "Print one JSON object instead of text");
+
   // Options given after the subcommand apply too (quadmesh mesh f.obj -o g.msh --quiet).
-  for (CLI::App* sub : {info_cmd, forms_cmd, mesh_cmd}) {
+  for (CLI::App* sub : {info_cmd, forms_cmd, mesh_cmd, quality_cmd}) {
     sub->add_flag("-q,--quiet", common.quiet, "No progress lines on stderr");
     sub->add_flag("--largest-component", common.largest_component,
                   "Keep only the largest connected component of the input");
@@ -81,6 +123,14 @@ int run(int argc, char** argv) {
   }
   if (info_cmd->parsed()) return run_info(info, common);
   if (forms_cmd->parsed()) return run_forms(forms, common);
+  if (quality_cmd->parsed()) return run_quality(quality, common);
+  if (form_choice != "auto") mesh.form = std::stoi(form_choice) - 1;
+  if (!size_text.empty()) {
+    if (size_text.back() == '%')
+      mesh.size_relative = std::stod(size_text) / 100.0;
+    else
+      mesh.size = std::stod(size_text);
+  }
   return run_mesh(mesh, common);
 }
 

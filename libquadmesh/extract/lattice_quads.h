@@ -1,0 +1,55 @@
+// Quad extraction: the integer grid of the parameterization pulled back to S
+// (method.md section 9; seed paper "pull back the grid"; here robust).
+//
+// Every unit cell [k, k+1] x [l, l+1] of the plane that the map covers once is one
+// quad. Cells are found triangle by triangle: a "piece" is a triangle whose open
+// image meets the open cell; pieces of two triangles sharing an edge belong to the
+// same quad when the open edge crosses the open cell (with the translation between
+// the two charts, an integer vector). A quad's corners are the cell's lattice
+// points, located in one of its pieces' closed triangles: at a triangle vertex, on
+// an edge or inside, with a key that does not depend on the chart, so neighbouring
+// quads share them. All predicates are exact: coordinates are fixed-point integers
+// (2^-30 units of the lattice) and orientations use 128-bit products; lattice
+// points on vertices, edges, cuts and the boundary are therefore decided exactly.
+// A cell is kept only if its pieces' image areas add up to 1 (it is complete);
+// the others, and any triangle whose image is not positively oriented, are
+// counted in the report.
+#pragma once
+
+#include "libquadmesh/param/face_map.h"
+#include "libquadmesh/param/surface_adjacency.h"
+
+namespace qm {
+
+/// Where a quad vertex lies on S.
+struct SurfaceLocation {
+  enum class Kind { vertex, edge, face };
+  Kind kind = Kind::face;
+  int a = -1;     ///< vertex: the vertex; edge: its smaller end
+  int b = -1;     ///< edge: its larger end
+  int face = -1;  ///< a triangle holding the point
+  std::array<double, 3> barycentric{};  ///< in `face`, by the soup's corner order
+};
+
+struct LatticeQuads {
+  std::vector<Vec3> points;
+  std::vector<std::array<int, 4>> quads;      ///< counter-clockwise (the image's orientation)
+  std::vector<SurfaceLocation> locations;     ///< per point
+};
+
+struct ExtractionReport {
+  std::size_t cells = 0;               ///< complete cells, i.e. quads
+  std::size_t incomplete_cells = 0;    ///< covered area not 1: dropped
+  std::size_t degenerate_cells = 0;    ///< two corners at one point, or a corner not found: dropped
+  std::size_t bad_triangles = 0;       ///< image area <= 0: not used
+  std::size_t seam_mismatches = 0;     ///< corners whose charts differ by a non-integer translation
+};
+
+/// fixed-point units per lattice unit
+constexpr std::int64_t lattice_scale = std::int64_t(1) << 30;
+
+/// Precondition: `param` is seamless (charts differ by integer translations).
+LatticeQuads extract_lattice_quads(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                   const FaceMap& param, ExtractionReport& report);
+
+}  // namespace qm

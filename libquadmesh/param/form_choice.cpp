@@ -1,0 +1,122 @@
+#include "libquadmesh/param/form_choice.h"
+
+#include "libquadmesh/core/error.h"
+
+#include <Eigen/Geometry>
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <limits>
+
+namespace qm {
+
+namespace {
+
+/// Per triangle: area and the gradients of Re and Im of every basis form (3 x K each).
+struct Gradients {
+  std::vector<double> area;
+  std::vector<Eigen::Matrix<double, 3, Eigen::Dynamic>> re, im;
+};
+
+Gradients gradients(const TriangleSoup& soup, const std::vector<FaceMap>& basis) {
+  const std::size_t nF = soup.triangles.size();
+  const Eigen::Index K = static_cast<Eigen::Index>(basis.size());
+  Gradients g;
+  g.area.resize(nF);
+  g.re.resize(nF);
+  g.im.resize(nF);
+  for (std::size_t f = 0; f < nF; ++f) {
+    const Triangle& t = soup.triangles[f];
+    const Vec3 e1 = soup.points[static_cast<std::size_t>(t[1])] - soup.points[static_cast<std::size_t>(t[0])];
+    const Vec3 e2 = soup.points[static_cast<std::size_t>(t[2])] - soup.points[static_cast<std::size_t>(t[0])];
+    const Vec3 n = e1.cross(e2);
+    const double n2 = n.squaredNorm();
+    g.area[f] = 0.5 * std::sqrt(n2);
+    g.re[f].setZero(3, K);
+    g.im[f].setZero(3, K);
+    if (n2 <= 0) continue;
+    // grad u = (du1 (e2 x n) + du2 (n x e1)) / |n|^2 for u linear with u(0) = 0
+    const Vec3 b1 = e2.cross(n) / n2, b2 = n.cross(e1) / n2;
+    for (Eigen::Index k = 0; k < K; ++k) {
+      const CornerValues& c = basis[static_cast<std::size_t>(k)].corners[f];
+      const Complex d1 = c[1] - c[0], d2 = c[2] - c[0];
+      g.re[f].col(k) = d1.real() * b1 + d2.real() * b2;
+      g.im[f].col(k) = d1.imag() * b1 + d2.imag() * b2;
+    }
+  }
+  return g;
+}
+
+/// The objective and its gradient with respect to c: the area-weighted variance
+/// of log |h|^2 over the triangles.
+double ratio(const Gradients& g, const Eigen::VectorXd& c, Eigen::VectorXd* gradient) {
+  double total_area = 0, sum = 0, sum2 = 0;
+  Eigen::VectorXd d1 = Eigen::VectorXd::Zero(c.size()), d2 = d1;
+  for (std::size_t f = 0; f < g.area.size(); ++f) {
+    const double a = g.area[f];
+    if (a <= 0) continue;
+    const Eigen::Vector3d gu = g.re[f] * c, gv = g.im[f] * c;
+    const double q = std::max(1e-300, 0.5 * (gu.squaredNorm() + gv.squaredNorm()));
+    const double l = std::log(q);
+    total_area += a;
+    sum += a * l;
+    sum2 += a * l * l;
+    if (gradient) {
+      const Eigen::VectorXd dl = (g.re[f].transpose() * gu + g.im[f].transpose() * gv) / q;
+      d1 += a * dl;
+      d2 += 2 * a * l * dl;
+    }
+  }
+  if (total_area <= 0) return std::numeric_limits<double>::infinity();
+  const double mean = sum / total_area;
+  if (gradient) *gradient = d2 / total_area - 2 * mean * d1 / total_area;
+  return sum2 / total_area - mean * mean;
+}
+
+}  // namespace
+
+double uniformity_ratio(const TriangleSoup& soup, const std::vector<FaceMap>& basis,
+                        const Eigen::VectorXd& coefficients) {
+  return ratio(gradients(soup, basis), coefficients, nullptr);
+}
+
+Eigen::VectorXd most_uniform_combination(const TriangleSoup& soup, const std::vector<FaceMap>& basis) {
+  QM_ASSERT(!basis.empty());
+  const Gradients g = gradients(soup, basis);
+  const Eigen::Index K = static_cast<Eigen::Index>(basis.size());
+  Eigen::VectorXd best = Eigen::VectorXd::Unit(K, 0);
+  double best_value = std::numeric_limits<double>::infinity();
+  for (Eigen::Index start = 0; start < K; ++start) {
+    Eigen::VectorXd c = Eigen::VectorXd::Unit(K, start), grad;
+    double value = ratio(g, c, &grad);
+    double step = 0.1;
+    for (int it = 0; it < 60 && K > 1; ++it) {
+      const double before = value;
+      const Eigen::VectorXd tangent = grad - grad.dot(c) * c;  // on the sphere
+      if (tangent.norm() < 1e-10) break;
+      bool moved = false;
+      while (step > 1e-8) {
+        Eigen::VectorXd trial = (c - step * tangent / tangent.norm()).normalized();
+        Eigen::VectorXd trial_grad;
+        const double v = ratio(g, trial, &trial_grad);
+        if (v < value) {
+          c = trial;
+          value = v;
+          grad = trial_grad;
+          step *= 1.5;
+          moved = true;
+          break;
+        }
+        step *= 0.5;
+      }
+      if (!moved || before - value < 1e-6 * std::abs(before)) break;
+    }
+    if (value < best_value) {
+      best_value = value;
+      best = c;
+    }
+  }
+  return best;
+}
+
+}  // namespace qm

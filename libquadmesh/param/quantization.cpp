@@ -1,0 +1,493 @@
+#include "libquadmesh/param/quantization.h"
+
+#include "libquadmesh/core/error.h"
+
+#include <Eigen/Geometry>
+#include <Eigen/CholmodSupport>
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <queue>
+#include <unordered_map>
+
+namespace qm {
+
+namespace {
+
+/// Image radius (lattice units) of the disk that moves rigidly with each cone.
+constexpr double disk_radius = 0.75;
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+/// Half the cotangent of each corner's angle: the weight of the opposite edge in
+/// the Dirichlet energy of a linear function, integral |grad u|^2 = sum w_jk (u_j - u_k)^2.
+std::array<double, 3> corner_weights(const TriangleSoup& soup, const Triangle& t) {
+  std::array<double, 3> w{};
+  for (int i = 0; i < 3; ++i) {
+    const Vec3& p = soup.points[static_cast<std::size_t>(t[i])];
+    const Vec3 u = soup.points[static_cast<std::size_t>(t[(i + 1) % 3])] - p;
+    const Vec3 v = soup.points[static_cast<std::size_t>(t[(i + 2) % 3])] - p;
+    const double cross = u.cross(v).norm();
+    w[static_cast<std::size_t>(i)] = cross > 0 ? 0.5 * u.dot(v) / cross : 0.0;
+  }
+  return w;
+}
+
+/// Dirichlet energy of a complex linear function on a triangle (both components).
+double face_energy(const std::array<double, 3>& w, const CornerValues& c) {
+  double e = 0;
+  for (int i = 0; i < 3; ++i) e += w[static_cast<std::size_t>(i)] * std::norm(c[(i + 1) % 3] - c[(i + 2) % 3]);
+  return e;
+}
+
+/// Minimizes sum_f E_f(psi + c_f) (c a closed form's face potentials, one real
+/// component) with psi fixed at `fixed`; returns psi per vertex.
+Eigen::VectorXd dirichlet_solve(const TriangleSoup& soup, const std::vector<std::array<double, 3>>& weights,
+                                const std::vector<std::array<double, 3>>& potentials,
+                                const std::map<int, double>& fixed, const char* component) {
+  const std::size_t nV = soup.points.size();
+  std::vector<int> index(nV, -1);
+  int free_count = 0;
+  for (std::size_t v = 0; v < nV; ++v)
+    if (!fixed.count(static_cast<int>(v))) index[v] = free_count++;
+  Eigen::VectorXd psi = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(nV));
+  for (const auto& [v, value] : fixed) psi[v] = value;
+  if (free_count == 0) return psi;
+  std::vector<Eigen::Triplet<double>> triplets;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(free_count);
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
+    const Triangle& t = soup.triangles[f];
+    for (int i = 0; i < 3; ++i) {
+      const int j = t[(i + 1) % 3], k = t[(i + 2) % 3];
+      const int jl = (i + 1) % 3, kl = (i + 2) % 3;
+      const double w = weights[f][static_cast<std::size_t>(i)];
+      // energy w (psi_j - psi_k + c_j - c_k)^2: gradient rows j and k
+      const double dc = potentials[f][static_cast<std::size_t>(jl)] - potentials[f][static_cast<std::size_t>(kl)];
+      for (int side = 0; side < 2; ++side) {
+        const int a = side ? k : j, b = side ? j : k;
+        const double sign = side ? -1.0 : 1.0;
+        const int ia = index[static_cast<std::size_t>(a)];
+        if (ia < 0) continue;
+        triplets.emplace_back(ia, ia, w);
+        const int ib = index[static_cast<std::size_t>(b)];
+        if (ib >= 0)
+          triplets.emplace_back(ia, ib, -w);
+        else
+          rhs[ia] += w * psi[b];
+        rhs[ia] -= w * sign * dc;
+      }
+    }
+  }
+  SparseMatrix L(free_count, free_count);
+  L.setFromTriplets(triplets.begin(), triplets.end());
+  Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> solver;
+  solver.compute(L);
+  if (solver.info() != Eigen::Success)
+    throw Error(ErrorCode::solver,
+                fmt::format("the {} quantization system could not be factored (degenerate triangles?)",
+                            component));
+  const Eigen::VectorXd x = solver.solve(rhs);
+  if (solver.info() != Eigen::Success || !x.allFinite())
+    throw Error(ErrorCode::solver, fmt::format("the {} quantization solve failed", component));
+  for (std::size_t v = 0; v < nV; ++v)
+    if (index[v] >= 0) psi[static_cast<Eigen::Index>(v)] = x[index[v]];
+  return psi;
+}
+
+/// The value of a face map at vertex v in the chart of one of its triangles.
+Complex value_at(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const FaceMap& map, int v) {
+  const int f = adjacency.vertex_faces[static_cast<std::size_t>(v)].front();
+  const Triangle& t = soup.triangles[static_cast<std::size_t>(f)];
+  for (int i = 0; i < 3; ++i)
+    if (t[i] == v) return map.corners[static_cast<std::size_t>(f)][i];
+  QM_ASSERT(false);
+  return {};
+}
+
+
+/// The vertices around a cone that the local model fixes, with the model's and
+/// the target's values relative to the cone.
+struct ConeDisk {
+  Complex a;                    ///< the model's coefficient
+  std::size_t star = 0;         ///< vertices[0, star) are the star's
+  std::vector<int> vertices;
+  std::vector<Complex> model;   ///< a W(v)
+  std::vector<Complex> target;  ///< integral of xi from the cone to v
+};
+
+/// The disk: the cone's star and every vertex reached from it whose target image
+/// lies within `disk_radius` of the cone's (breadth first; `constrained` vertices
+/// are crossed but not listed). `fixed_a`: use this coefficient instead of fitting. The model: the disk projected on the tangent plane at
+/// the cone, polar coordinates (r, t) with t counter-clockwise from the first star
+/// neighbour (for a boundary cone, from the boundary edge leaving it, over the
+/// range T of the star), W = r^g e^(i g t) with g = image angle / (2 pi or T), and
+/// a fitted to the target in least squares (real on the boundary, which keeps it
+/// horizontal). For a zero of order m inside, W = (x + iy)^(m+1): fold-free.
+ConeDisk cone_disk(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const FaceMap& xi,
+                   const ZeroVertex& cone, const std::vector<char>& constrained, const Complex* fixed_a) {
+  const int c = cone.vertex;
+  const VertexRing ring = vertex_ring(soup, adjacency, c);
+  std::unordered_map<int, Complex> reach{{c, Complex(0, 0)}};
+  std::vector<int> order;
+  for (int v : ring.neighbours) {
+    reach[v] = edge_value(soup, adjacency, xi, c, v);
+    if (!constrained[static_cast<std::size_t>(v)]) order.push_back(v);
+  }
+  std::vector<int> frontier = ring.neighbours;
+  while (!frontier.empty()) {
+    std::vector<int> next;
+    for (int u : frontier)
+      for (int f : adjacency.vertex_faces[static_cast<std::size_t>(u)])
+        for (int v : soup.triangles[static_cast<std::size_t>(f)]) {
+          if (reach.count(v) || constrained[static_cast<std::size_t>(v)]) continue;
+          const Complex at = reach[u] + edge_value(soup, adjacency, xi, u, v);
+          if (std::abs(at) > disk_radius) continue;
+          reach[v] = at;
+          order.push_back(v);
+          next.push_back(v);
+        }
+    frontier.swap(next);
+  }
+  // tangent frame at the cone: normal from the star, x towards the first neighbour
+  const Vec3& p = soup.points[static_cast<std::size_t>(c)];
+  Vec3 normal = Vec3::Zero();
+  for (int f : adjacency.vertex_faces[static_cast<std::size_t>(c)]) {
+    const Triangle& t = soup.triangles[static_cast<std::size_t>(f)];
+    normal += (soup.points[static_cast<std::size_t>(t[1])] - soup.points[static_cast<std::size_t>(t[0])])
+                  .cross(soup.points[static_cast<std::size_t>(t[2])] - soup.points[static_cast<std::size_t>(t[0])]);
+  }
+  normal.normalize();
+  Vec3 x = soup.points[static_cast<std::size_t>(ring.neighbours.front())] - p;
+  x = (x - x.dot(normal) * normal).normalized();
+  const Vec3 y = normal.cross(x);
+  auto polar_of = [&](int v) {
+    const Vec3 d = soup.points[static_cast<std::size_t>(v)] - p;
+    double t = std::atan2(d.dot(y), d.dot(x));
+    if (t < 0) t += 2 * M_PI;
+    return std::make_pair(std::hypot(d.dot(x), d.dot(y)), t);
+  };
+  double range = 2 * M_PI;
+  if (cone.on_boundary) range = polar_of(ring.neighbours.back()).second;
+  const double g = cone.image_angle() / range;
+  ConeDisk disk;
+  Complex num = 0;
+  double den = 0;
+  std::vector<Complex> W;
+  // the star itself: intrinsic polar coordinates (3D distances, cumulative 3D
+  // angles scaled to the image angle), monotone around the cone, hence fold-free
+  std::unordered_map<int, Complex> star_w;
+  {
+    const std::size_t n = ring.neighbours.size();
+    std::vector<double> theta(n, 0.0);
+    double total = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (k + 1 == n && ring.boundary) break;
+      const Vec3 a = soup.points[static_cast<std::size_t>(ring.neighbours[k])] - p;
+      const Vec3 b = soup.points[static_cast<std::size_t>(ring.neighbours[(k + 1) % n])] - p;
+      const double angle = std::atan2(a.cross(b).norm(), a.dot(b));
+      if (k + 1 < n) theta[k + 1] = theta[k] + angle;
+      total += angle;
+    }
+    const double gs = cone.image_angle() / total;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double r = (soup.points[static_cast<std::size_t>(ring.neighbours[k])] - p).norm();
+      star_w[ring.neighbours[k]] = std::polar(std::pow(r, gs), theta[k] * gs);
+    }
+  }
+  for (int v : order) {
+    auto [r, t] = polar_of(v);
+    if (cone.on_boundary) t = std::min(t, range);
+    const auto in_star = star_w.find(v);
+    W.push_back(in_star != star_w.end() ? in_star->second : std::polar(std::pow(r, g), t * g));
+    num += std::conj(W.back()) * reach[v];
+    den += std::norm(W.back());
+  }
+  Complex a = den > 0 ? num / den : Complex(1, 0);
+  if (cone.on_boundary) a = Complex(a.real(), 0);
+  if (fixed_a) a = *fixed_a;
+  disk.a = a;
+  const std::size_t star = static_cast<std::size_t>(std::count_if(
+      order.begin(), order.end(), [&](int v) {
+        return std::find(ring.neighbours.begin(), ring.neighbours.end(), v) != ring.neighbours.end();
+      }));
+  disk.star = star;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    // pure model on the star, blending smoothly into the target towards the rim
+    const double rho = std::abs(reach[order[k]]) / disk_radius;
+    double beta = k < star ? 0.0 : std::clamp((rho - 0.25) / 0.75, 0.0, 1.0);
+    beta = beta * beta * (3 - 2 * beta);
+    disk.vertices.push_back(order[k]);
+    disk.model.push_back((1 - beta) * a * W[k] + beta * reach[order[k]]);
+    disk.target.push_back(reach[order[k]]);
+  }
+  return disk;
+}
+
+}  // namespace
+
+double round_nonzero(double x) {
+  const double r = std::round(x);
+  if (r == 0 && std::abs(x) > 0.25) return x > 0 ? 1.0 : -1.0;
+  return r;
+}
+
+Complex edge_value(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const FaceMap& form,
+                   int a, int b) {
+  (void)soup;
+  EdgeCorner e = adjacency.find(a, b);
+  if (e.face >= 0) {
+    const CornerValues& c = form.corners[static_cast<std::size_t>(e.face)];
+    return c[e.j] - c[e.i];
+  }
+  e = adjacency.find(b, a);
+  QM_ASSERT_MSG(e.face >= 0, "edge_value: not an edge");
+  const CornerValues& c = form.corners[static_cast<std::size_t>(e.face)];
+  return c[e.i] - c[e.j];
+}
+
+Complex path_integral(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const FaceMap& form,
+                      const std::vector<int>& path, bool closed) {
+  Complex sum = 0;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) sum += edge_value(soup, adjacency, form, path[i], path[i + 1]);
+  if (closed && path.size() > 1) sum += edge_value(soup, adjacency, form, path.back(), path.front());
+  return sum;
+}
+
+FaceMap integrate_cut(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const FaceMap& form,
+                      int base) {
+  const std::size_t nF = soup.triangles.size();
+  FaceMap out = form;
+  std::vector<char> done(nF, 0);
+  auto shift = [&](std::size_t f, Complex by) {
+    for (Complex& z : out.corners[f]) z += by;
+  };
+  const int first = adjacency.vertex_faces[static_cast<std::size_t>(base)].front();
+  {
+    const Triangle& t = soup.triangles[static_cast<std::size_t>(first)];
+    for (int i = 0; i < 3; ++i)
+      if (t[i] == base) shift(static_cast<std::size_t>(first), -form.corners[static_cast<std::size_t>(first)][i]);
+  }
+  std::queue<int> queue;
+  auto start = [&](int f) {
+    done[static_cast<std::size_t>(f)] = 1;
+    queue.push(f);
+  };
+  start(first);
+  for (std::size_t seed = 0;; ++seed) {
+    while (!queue.empty()) {
+      const int f = queue.front();
+      queue.pop();
+      const Triangle& t = soup.triangles[static_cast<std::size_t>(f)];
+      for (int i = 0; i < 3; ++i) {
+        const int a = t[i], b = t[(i + 1) % 3];
+        const EdgeCorner g = adjacency.find(b, a);
+        if (g.face < 0 || done[static_cast<std::size_t>(g.face)]) continue;
+        // g holds b at corner g.i and a at corner g.j: match the value at a
+        shift(static_cast<std::size_t>(g.face),
+              out.corners[static_cast<std::size_t>(f)][i] - out.corners[static_cast<std::size_t>(g.face)][g.j]);
+        start(g.face);
+      }
+    }
+    while (seed < nF && done[seed]) ++seed;
+    if (seed >= nF) break;
+    start(static_cast<int>(seed));  // another component (not expected)
+  }
+  return out;
+}
+
+Quantization quantize(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                      const FaceMap& target, const std::vector<FaceMap>& basis,
+                      const std::vector<ZeroVertex>& zeros, const PeriodLoops& loops) {
+  QM_ASSERT(!loops.boundaries.empty() && !basis.empty());
+  const std::size_t nF = soup.triangles.size(), nV = soup.points.size();
+  const Eigen::Index K = static_cast<Eigen::Index>(basis.size());
+  Quantization q;
+
+  // 1. periods of T and of the basis on the loops of H_1(S)
+  struct Loop {
+    std::string name;
+    const std::vector<int>* path;
+  };
+  std::vector<Loop> u_loops, v_loops;
+  for (std::size_t i = 0; i < loops.handles.size(); ++i) {
+    u_loops.push_back({fmt::format("handle_{}", i), &loops.handles[i]});
+    v_loops.push_back(u_loops.back());
+  }
+  for (std::size_t k = 1; k < loops.boundaries.size(); ++k)
+    u_loops.push_back({fmt::format("boundary_{}", k), &loops.boundaries[k]});
+  auto correction = [&](const std::vector<Loop>& list, bool imaginary, std::vector<double>& rounded) {
+    const Eigen::Index n = static_cast<Eigen::Index>(list.size());
+    Eigen::VectorXd coefficients = Eigen::VectorXd::Zero(K);
+    if (n == 0) return coefficients;
+    Eigen::MatrixXd M(n, K);
+    Eigen::VectorXd delta(n);
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const auto& path = *list[static_cast<std::size_t>(j)].path;
+      for (Eigen::Index k = 0; k < K; ++k) {
+        const Complex p = path_integral(soup, adjacency, basis[static_cast<std::size_t>(k)], path, true);
+        M(j, k) = imaginary ? p.imag() : p.real();
+      }
+      const Complex p = path_integral(soup, adjacency, target, path, true);
+      const double value = imaginary ? p.imag() : p.real();
+      rounded.push_back(round_nonzero(value));
+      delta[j] = rounded.back() - value;
+    }
+    coefficients = M.completeOrthogonalDecomposition().solve(delta);
+    return coefficients;
+  };
+  std::vector<double> u_rounded, v_rounded;
+  const Eigen::VectorXd e = correction(u_loops, false, u_rounded);
+  const Eigen::VectorXd d = correction(v_loops, true, v_rounded);
+
+  // 2. xi = T + corrections, and C = xi - T
+  FaceMap C;
+  C.corners.assign(nF, CornerValues{});
+  for (Eigen::Index k = 0; k < K; ++k)
+    for (std::size_t f = 0; f < nF; ++f)
+      for (int i = 0; i < 3; ++i) {
+        const Complex b = basis[static_cast<std::size_t>(k)].corners[f][i];
+        C.corners[f][i] += Complex(e[k] * b.real(), d[k] * b.imag());
+      }
+  FaceMap xi = target;
+  for (std::size_t f = 0; f < nF; ++f)
+    for (int i = 0; i < 3; ++i) xi.corners[f][i] += C.corners[f][i];
+  // the rounded periods as they came out (exact integers up to round-off)
+  for (std::size_t j = 0; j < u_loops.size(); ++j) {
+    const Complex before = path_integral(soup, adjacency, target, *u_loops[j].path, true);
+    const Complex after = path_integral(soup, adjacency, xi, *u_loops[j].path, true);
+    q.periods.push_back({u_loops[j].name, before, after});
+  }
+
+  const int base = loops.boundaries[0].front();
+  const FaceMap Xi = integrate_cut(soup, adjacency, xi, base);
+
+  // 3. Dirichlet values of psi
+  std::map<int, double> fixed_u, fixed_v;
+  std::vector<int> loop_of(nV, -1);
+  for (std::size_t k = 0; k < loops.boundaries.size(); ++k)
+    for (int v : loops.boundaries[k]) loop_of[static_cast<std::size_t>(v)] = static_cast<int>(k);
+  std::vector<double> shift(loops.boundaries.size(), 0.0);
+  for (std::size_t k = 1; k < loops.boundaries.size(); ++k) {
+    const double level = path_integral(soup, adjacency, xi, loops.bridges[k - 1], false).imag();
+    shift[k] = round_nonzero(level) - level;
+    q.periods.push_back({fmt::format("bridge_{}", k),
+                         Complex(0, path_integral(soup, adjacency, target, loops.bridges[k - 1], false).imag()),
+                         Complex(0, round_nonzero(level))});
+  }
+  for (std::size_t v = 0; v < nV; ++v)
+    if (loop_of[v] >= 0) fixed_v[static_cast<int>(v)] = shift[static_cast<std::size_t>(loop_of[v])];
+
+  auto lattice = [&](int v) {  // psi making v a lattice point (chart independent)
+    const Complex x = value_at(soup, adjacency, Xi, v);
+    return Complex(std::round(x.real()) - x.real(), std::round(x.imag()) - x.imag());
+  };
+  // cones: the zeros, then the corners that do not share a lattice point with the
+  // cone met before them along their loop
+  std::vector<char> is_cone(nV, 0), constrained(nV, 0);
+  std::vector<const ZeroVertex*> cones;
+  std::unordered_map<int, const ZeroVertex*> corner_at;
+  for (const ZeroVertex& z : zeros) {
+    if (z.corner) {
+      corner_at[z.vertex] = &z;
+      continue;
+    }
+    cones.push_back(&z);
+    is_cone[static_cast<std::size_t>(z.vertex)] = 1;
+  }
+  for (const auto& loop : loops.boundaries) {
+    double position = value_at(soup, adjacency, Xi, loop.front()).real();
+    double last_lattice = std::nan("");
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const int v = loop[i];
+      if (i > 0) position += edge_value(soup, adjacency, xi, loop[i - 1], v).real();
+      if (is_cone[static_cast<std::size_t>(v)]) {
+        last_lattice = std::round(position);
+        continue;
+      }
+      const auto corner = corner_at.find(v);
+      if (corner == corner_at.end()) continue;
+      if (std::round(position) == last_lattice) {
+        ++q.corners_dropped;
+        continue;
+      }
+      cones.push_back(corner->second);
+      is_cone[static_cast<std::size_t>(v)] = 1;
+      last_lattice = std::round(position);
+      ++q.corners;
+    }
+  }
+  // each cone on its lattice point with the local model on its star, then on the
+  // rest of a disk around it; a corner in the star of a cone before it stays free
+  std::vector<const ZeroVertex*> placed;
+  std::vector<Complex> placed_psi, placed_a;
+  auto apply = [&](const ConeDisk& disk, Complex psi_cone, std::size_t from, std::size_t to) {
+    for (std::size_t k = from; k < to; ++k) {
+      const int v = disk.vertices[k];
+      if (constrained[static_cast<std::size_t>(v)]) continue;
+      const Complex psi = psi_cone + disk.model[k] - disk.target[k];
+      fixed_u[v] = psi.real();
+      if (loop_of[static_cast<std::size_t>(v)] < 0) fixed_v[v] = psi.imag();
+      constrained[static_cast<std::size_t>(v)] = 2;
+    }
+  };
+  for (const ZeroVertex* z : cones) {
+    if (z->corner && constrained[static_cast<std::size_t>(z->vertex)]) {
+      --q.corners;
+      ++q.corners_dropped;
+      continue;
+    }
+    const Complex lattice_psi = lattice(z->vertex);
+    fixed_u[z->vertex] = lattice_psi.real();
+    if (!z->on_boundary) fixed_v[z->vertex] = lattice_psi.imag();
+    constrained[static_cast<std::size_t>(z->vertex)] = 1;
+    if (!z->corner) ++q.lattice_zeros;
+    const Complex psi_cone(lattice_psi.real(), fixed_v[z->vertex]);
+    const ConeDisk disk = cone_disk(soup, adjacency, xi, *z, constrained, nullptr);
+    apply(disk, psi_cone, 0, disk.star);
+    placed.push_back(z);
+    placed_psi.push_back(psi_cone);
+    placed_a.push_back(disk.a);
+  }
+  for (std::size_t c = 0; c < placed.size(); ++c) {
+    const ConeDisk disk = cone_disk(soup, adjacency, xi, *placed[c], constrained, &placed_a[c]);
+    apply(disk, placed_psi[c], 0, disk.vertices.size());
+  }
+  if (fixed_u.empty()) fixed_u[base] = 0.0;
+  q.fixed_vertices = fixed_u.size() + fixed_v.size();
+
+  // 4. two sparse solves
+  std::vector<std::array<double, 3>> weights(nF), cu(nF), cv(nF);
+  for (std::size_t f = 0; f < nF; ++f) {
+    weights[f] = corner_weights(soup, soup.triangles[f]);
+    for (int i = 0; i < 3; ++i) {
+      cu[f][static_cast<std::size_t>(i)] = C.corners[f][i].real();
+      cv[f][static_cast<std::size_t>(i)] = C.corners[f][i].imag();
+    }
+  }
+  const Eigen::VectorXd psi_u = dirichlet_solve(soup, weights, cu, fixed_u, "U");
+  const Eigen::VectorXd psi_v = dirichlet_solve(soup, weights, cv, fixed_v, "V");
+
+  q.param = Xi;
+  double change = 0, reference = 0;
+  for (std::size_t f = 0; f < nF; ++f) {
+    const Triangle& t = soup.triangles[f];
+    CornerValues delta{};
+    for (int i = 0; i < 3; ++i) {
+      const Complex psi(psi_u[t[i]], psi_v[t[i]]);
+      q.param.corners[f][i] += psi;
+      delta[static_cast<std::size_t>(i)] = q.param.corners[f][i] - target.corners[f][i];
+    }
+    change += face_energy(weights[f], delta);
+    reference += face_energy(weights[f], target.corners[f]);
+    if (image_area2(q.param.corners[f]) <= 0) ++q.flipped;
+  }
+  q.distortion = reference > 0 ? change / reference : 0.0;
+  return q;
+}
+
+}  // namespace qm

@@ -1,0 +1,78 @@
+#include "libquadmesh/param/surface_adjacency.h"
+
+#include "libquadmesh/core/error.h"
+
+namespace qm {
+
+SurfaceAdjacency surface_adjacency(const TriangleSoup& soup) {
+  SurfaceAdjacency a;
+  const std::size_t nV = soup.points.size();
+  a.vertex_faces.assign(nV, {});
+  a.boundary_vertex.assign(nV, 0);
+  a.loop_of_vertex.assign(nV, -1);
+  a.directed.reserve(3 * soup.triangles.size());
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
+    const Triangle& t = soup.triangles[f];
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3;
+      a.vertex_faces[static_cast<std::size_t>(t[i])].push_back(static_cast<int>(f));
+      a.directed[SurfaceAdjacency::key(t[i], t[j])] = EdgeCorner{static_cast<int>(f), i, j};
+    }
+  }
+  // boundary edges a->b: no triangle holds b->a; next boundary vertex after b is unique
+  std::vector<int> next(nV, -1);
+  for (const auto& [k, e] : a.directed) {
+    const int u = soup.triangles[static_cast<std::size_t>(e.face)][e.i];
+    const int w = soup.triangles[static_cast<std::size_t>(e.face)][e.j];
+    if (a.find(w, u).face < 0) {
+      next[static_cast<std::size_t>(u)] = w;
+      a.boundary_vertex[static_cast<std::size_t>(u)] = a.boundary_vertex[static_cast<std::size_t>(w)] = 1;
+    }
+  }
+  for (std::size_t v = 0; v < nV; ++v) {
+    if (next[v] < 0 || a.loop_of_vertex[v] >= 0) continue;
+    std::vector<int> loop;
+    int u = static_cast<int>(v);
+    while (a.loop_of_vertex[static_cast<std::size_t>(u)] < 0) {
+      a.loop_of_vertex[static_cast<std::size_t>(u)] = static_cast<int>(a.boundary_loops.size());
+      loop.push_back(u);
+      u = next[static_cast<std::size_t>(u)];
+      QM_ASSERT(u >= 0);
+    }
+    a.boundary_loops.push_back(std::move(loop));
+  }
+  return a;
+}
+
+VertexRing vertex_ring(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, int v) {
+  VertexRing ring;
+  // around v, triangle (v, b, c) in CCW order goes from neighbour b to neighbour c
+  std::unordered_map<int, std::pair<int, int>> step;  // b -> (c, face)
+  std::unordered_map<int, int> incoming;
+  for (int f : adjacency.vertex_faces[static_cast<std::size_t>(v)]) {
+    const Triangle& t = soup.triangles[static_cast<std::size_t>(f)];
+    int k = 0;
+    while (t[k] != v) ++k;
+    const int b = t[(k + 1) % 3], c = t[(k + 2) % 3];
+    step[b] = {c, f};
+    ++incoming[c];
+  }
+  int start = step.begin()->first;
+  for (const auto& [b, cf] : step)
+    if (!incoming.count(b)) {
+      start = b;
+      ring.boundary = true;
+    }
+  int b = start;
+  for (std::size_t guard = 0; guard <= step.size(); ++guard) {
+    ring.neighbours.push_back(b);
+    const auto it = step.find(b);
+    if (it == step.end()) break;
+    ring.faces.push_back(it->second.second);
+    b = it->second.first;
+    if (b == start) break;
+  }
+  return ring;
+}
+
+}  // namespace qm

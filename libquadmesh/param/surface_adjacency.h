@@ -1,0 +1,56 @@
+// Adjacency of an oriented manifold triangle soup with boundary: the faces around
+// each vertex in counter-clockwise order, directed edges, boundary loops.
+// Rebuilt after every refinement; the param/ and extract/ stages share it.
+#pragma once
+
+#include "libquadmesh/core/triangle_soup.h"
+
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace qm {
+
+/// Where a directed edge a->b sits: triangle f, with a at corner i and b at corner j.
+struct EdgeCorner {
+  int face = -1;
+  int i = -1;
+  int j = -1;
+};
+
+struct SurfaceAdjacency {
+  std::vector<std::vector<int>> vertex_faces;  ///< faces at each vertex (any order)
+  std::unordered_map<std::uint64_t, EdgeCorner> directed;  ///< key(a, b) -> its triangle
+  std::vector<char> boundary_vertex;
+  /// Boundary loops, each in the direction of its triangles (the surface on the left).
+  std::vector<std::vector<int>> boundary_loops;
+  std::vector<int> loop_of_vertex;  ///< boundary loop of a boundary vertex, else -1
+
+  static std::uint64_t key(int a, int b) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+           static_cast<std::uint32_t>(b);
+  }
+  /// The triangle holding the directed edge a->b, or face -1.
+  EdgeCorner find(int a, int b) const {
+    const auto it = directed.find(key(a, b));
+    return it == directed.end() ? EdgeCorner{} : it->second;
+  }
+  bool is_boundary_edge(int a, int b) const {
+    return (find(a, b).face < 0) != (find(b, a).face < 0);
+  }
+};
+
+/// Precondition: an oriented, edge- and vertex-manifold soup.
+SurfaceAdjacency surface_adjacency(const TriangleSoup& soup);
+
+/// The neighbours of v in counter-clockwise order (for a boundary vertex, from the
+/// boundary neighbour that follows v on its loop... to the one that precedes it),
+/// with the face between neighbour k and k + 1.
+struct VertexRing {
+  std::vector<int> neighbours;
+  std::vector<int> faces;  ///< faces[k] holds v, neighbours[k], neighbours[k + 1 (mod)]
+  bool boundary = false;
+};
+VertexRing vertex_ring(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, int v);
+
+}  // namespace qm

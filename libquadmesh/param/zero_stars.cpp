@@ -1,0 +1,244 @@
+#include "libquadmesh/param/zero_stars.h"
+
+#include "libquadmesh/core/error.h"
+#include "libquadmesh/core/union_find.h"
+#include "libquadmesh/param/surface_adjacency.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <algorithm>
+#include <cstdlib>
+#include <functional>
+#include <queue>
+#include <set>
+#include <unordered_map>
+
+namespace qm {
+
+void split_edge(TriangleSoup& soup, std::vector<FaceMap*>& maps, int a, int b) {
+  const int m = static_cast<int>(soup.points.size());
+  soup.points.push_back(0.5 * (soup.points[static_cast<std::size_t>(a)] +
+                               soup.points[static_cast<std::size_t>(b)]));
+  if (!soup.point_labels.empty()) soup.point_labels.push_back(-1);
+  const std::size_t nF = soup.triangles.size();
+  for (std::size_t f = 0; f < nF; ++f) {
+    Triangle t = soup.triangles[f];
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3, k = (i + 2) % 3;
+      const bool ab = t[i] == a && t[j] == b, ba = t[i] == b && t[j] == a;
+      if (!ab && !ba) continue;
+      // (t_i, t_j, t_k) -> (t_i, m, t_k) and (m, t_j, t_k)
+      soup.triangles[f] = {t[i], m, t[k]};
+      soup.triangles.push_back({m, t[j], t[k]});
+      if (!soup.triangle_labels.empty()) soup.triangle_labels.push_back(soup.triangle_labels[f]);
+      for (FaceMap* map : maps) {
+        const CornerValues c = map->corners[f];
+        const Complex mid = 0.5 * (c[i] + c[j]);
+        map->corners[f] = {c[i], mid, c[k]};
+        map->corners.push_back({mid, c[j], c[k]});
+      }
+      break;
+    }
+  }
+  std::vector<CurveEdge> split;
+  for (CurveEdge& e : soup.cad.edges)
+    if ((e.a == a && e.b == b) || (e.a == b && e.b == a)) {
+      split.push_back({m, e.b, e.curve});
+      e.b = m;
+    }
+  soup.cad.edges.insert(soup.cad.edges.end(), split.begin(), split.end());
+}
+
+std::vector<double> angle_sums(const TriangleSoup& soup) {
+  std::vector<double> sum(soup.points.size(), 0.0);
+  for (const Triangle& t : soup.triangles)
+    for (int i = 0; i < 3; ++i) {
+      const Vec3& p = soup.points[static_cast<std::size_t>(t[i])];
+      const Vec3 u = soup.points[static_cast<std::size_t>(t[(i + 1) % 3])] - p;
+      const Vec3 v = soup.points[static_cast<std::size_t>(t[(i + 2) % 3])] - p;
+      sum[static_cast<std::size_t>(t[i])] += std::atan2(u.cross(v).norm(), u.dot(v));
+    }
+  return sum;
+}
+
+namespace {
+
+/// Vertices within `radius` of `source` in the image metric of `map` (edge length
+/// |map(e)|), with their distances.
+std::unordered_map<int, double> image_ball(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                           const FaceMap& map, int source, double radius) {
+  std::unordered_map<int, double> distance{{source, 0.0}};
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+  queue.push({0.0, source});
+  while (!queue.empty()) {
+    const auto [d, u] = queue.top();
+    queue.pop();
+    if (d > distance[u]) continue;
+    for (int f : adjacency.vertex_faces[static_cast<std::size_t>(u)]) {
+      const Triangle& t = soup.triangles[static_cast<std::size_t>(f)];
+      int k = 0;
+      while (t[k] != u) ++k;
+      for (int step : {1, 2}) {
+        const int w = t[(k + step) % 3];
+        const double nd = d + std::abs(map.corners[static_cast<std::size_t>(f)][(k + step) % 3] -
+                                       map.corners[static_cast<std::size_t>(f)][k]);
+        if (nd > radius) continue;
+        const auto it = distance.find(w);
+        if (it != distance.end() && it->second <= nd) continue;
+        distance[w] = nd;
+        queue.push({nd, w});
+      }
+    }
+  }
+  return distance;
+}
+
+}  // namespace
+
+std::vector<ZeroVertex> merge_close_zeros(const TriangleSoup& soup, const FaceMap& map,
+                                          std::vector<ZeroVertex> zeros, double radius) {
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  // an interior zero this close to the boundary would round onto the boundary's
+  // level: it meets its mirror there, a boundary zero of twice its order
+  for (ZeroVertex& z : zeros) {
+    if (z.on_boundary) continue;
+    int nearest = -1;
+    double best = (std::getenv("QMSNAP") ? std::atof(std::getenv("QMSNAP")) : 0.75) * radius;
+    for (const auto& [v, d] : image_ball(soup, adjacency, map, z.vertex, best))
+      if (adjacency.boundary_vertex[static_cast<std::size_t>(v)] && d <= best) {
+        best = d;
+        nearest = v;
+      }
+    if (nearest >= 0) z = ZeroVertex{nearest, 2 * z.order, true};
+  }
+  std::unordered_map<int, int> zero_at;
+  for (std::size_t i = 0; i < zeros.size(); ++i) zero_at[zeros[i].vertex] = static_cast<int>(i);
+  UnionFind groups(zeros.size());
+  for (std::size_t i = 0; i < zeros.size(); ++i)
+    for (const auto& [v, d] : image_ball(soup, adjacency, map, zeros[i].vertex, radius)) {
+      const auto hit = zero_at.find(v);
+      if (hit != zero_at.end()) groups.unite(static_cast<int>(i), hit->second);
+    }
+  std::unordered_map<int, std::vector<int>> members;
+  for (std::size_t i = 0; i < zeros.size(); ++i) members[groups.find(static_cast<int>(i))].push_back(static_cast<int>(i));
+  std::vector<ZeroVertex> merged;
+  for (std::size_t i = 0; i < zeros.size(); ++i) {
+    const auto it = members.find(static_cast<int>(i));
+    if (it == members.end()) continue;  // not a root
+    const std::vector<int>& list = it->second;
+    if (list.size() == 1) {
+      merged.push_back(zeros[static_cast<std::size_t>(list[0])]);
+      continue;
+    }
+    bool boundary = false;
+    for (int k : list) boundary |= zeros[static_cast<std::size_t>(k)].on_boundary;
+    ZeroVertex z;
+    z.on_boundary = boundary;
+    int best = -1;
+    for (int k : list) {
+      const ZeroVertex& y = zeros[static_cast<std::size_t>(k)];
+      // orders on the double: interior zeros count twice (they have a mirror)
+      z.order += boundary ? (y.on_boundary ? y.order : 2 * y.order) : y.order;
+      if (y.on_boundary != boundary) continue;
+      if (best < 0 || y.order > zeros[static_cast<std::size_t>(best)].order) best = k;
+    }
+    z.vertex = zeros[static_cast<std::size_t>(best)].vertex;
+    merged.push_back(z);
+  }
+  return merged;
+}
+
+std::vector<ZeroVertex> boundary_corners(const TriangleSoup& soup, double corner_angle_deg, double scale,
+                                         const std::vector<ZeroVertex>& taken) {
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  std::vector<char> used(soup.points.size(), 0);
+  for (const ZeroVertex& z : taken) used[static_cast<std::size_t>(z.vertex)] = 1;
+  std::vector<ZeroVertex> corners;
+  const double limit = corner_angle_deg * M_PI / 180.0;
+  for (const auto& loop : adjacency.boundary_loops) {
+    const std::size_t n = loop.size();
+    auto point = [&](std::size_t i) { return soup.points[static_cast<std::size_t>(loop[i % n])]; };
+    // the point at arc length `scale` from vertex i, walking by `step` (+1 or n - 1)
+    auto reach = [&](std::size_t i, std::size_t step, double distance) {
+      double left = distance;
+      std::size_t j = i;
+      for (std::size_t guard = 0; guard + 1 < n; ++guard) {
+        const std::size_t k = (j + step) % n;
+        const double length = (point(k) - point(j)).norm();
+        if (length >= left) return Vec3(point(j) + (point(k) - point(j)) * (left / length));
+        left -= length;
+        j = k;
+      }
+      return point(j);
+    };
+    auto turning_at = [&](std::size_t i, double distance) {
+      const Vec3 a = reach(i, n - 1, distance) - point(i), b = reach(i, 1, distance) - point(i);
+      return M_PI - std::atan2(a.cross(b).norm(), a.dot(b));
+    };
+    std::vector<double> turning(n), local(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      turning[i] = turning_at(i, scale);
+      local[i] = turning_at(i, 0.25 * scale);
+    }
+    // a polygon approximating a smooth curve turns at every vertex: a corner must
+    // stand out from the loop's typical turning
+    std::vector<double> sorted = turning;
+    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(n / 2), sorted.end());
+    const double typical = std::abs(sorted[n / 2]);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (turning[i] <= 2.5 * typical) continue;
+      // a corner turns within a short distance: a smooth bend (a small hole) turns
+      // in proportion to the distance and is no corner
+      if (used[static_cast<std::size_t>(loop[i])] || turning[i] <= limit || local[i] < 0.6 * turning[i]) continue;
+      // the sharpest vertex within `scale` along the loop
+      bool sharpest = true;
+      for (std::size_t step : {std::size_t(1), n - 1}) {
+        double walked = 0;
+        for (std::size_t j = i, guard = 0; guard + 1 < n && sharpest; ++guard) {
+          const std::size_t k = (j + step) % n;
+          walked += (point(k) - point(j)).norm();
+          if (walked > scale) break;
+          if (turning[k] > turning[i] || (turning[k] == turning[i] && k < i)) sharpest = false;
+          j = k;
+        }
+      }
+      if (sharpest) corners.push_back({loop[i], 0, true, true});
+    }
+  }
+  return corners;
+}
+
+std::size_t refine_zero_stars(TriangleSoup& soup, std::vector<FaceMap*> maps,
+                              const std::vector<ZeroVertex>& zeros) {
+  std::size_t splits = 0;
+  for (int round = 0; round < 12; ++round) {
+    const SurfaceAdjacency adjacency = surface_adjacency(soup);
+    std::set<std::pair<int, int>> wide;
+    for (const ZeroVertex& z : zeros) {
+      const VertexRing ring = vertex_ring(soup, adjacency, z.vertex);
+      const Vec3& p = soup.points[static_cast<std::size_t>(z.vertex)];
+      std::vector<double> angles;
+      double total = 0;
+      for (std::size_t k = 0; k < ring.faces.size(); ++k) {
+        const Vec3 u = soup.points[static_cast<std::size_t>(ring.neighbours[k])] - p;
+        const Vec3 w = soup.points[static_cast<std::size_t>(ring.neighbours[(k + 1) % ring.neighbours.size()])] - p;
+        angles.push_back(std::atan2(u.cross(w).norm(), u.dot(w)));
+        total += angles.back();
+      }
+      for (std::size_t k = 0; k < angles.size(); ++k)
+        if (angles[k] * z.image_angle() / total > max_model_corner_angle) {
+          const int b = ring.neighbours[k], c = ring.neighbours[(k + 1) % ring.neighbours.size()];
+          wide.insert({std::min(b, c), std::max(b, c)});
+        }
+    }
+    if (wide.empty()) break;
+    for (const auto& [b, c] : wide) {
+      split_edge(soup, maps, b, c);
+      ++splits;
+    }
+  }
+  return splits;
+}
+
+}  // namespace qm

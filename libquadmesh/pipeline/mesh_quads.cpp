@@ -1,0 +1,220 @@
+#include "libquadmesh/pipeline/mesh_quads.h"
+
+#include "libquadmesh/core/error.h"
+#include "libquadmesh/forms/boundary_chords.h"
+#include "libquadmesh/forms/named_loops.h"
+#include "libquadmesh/forms/remesh.h"
+#include "libquadmesh/param/form_choice.h"
+#include "libquadmesh/param/surface_forms.h"
+#include "libquadmesh/param/untangle.h"
+
+#include <Eigen/Geometry>
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+
+namespace qm {
+
+namespace {
+
+class Stages {
+ public:
+  Stages(std::vector<std::pair<std::string, double>>& out, const ProgressCallback& progress)
+      : out_(out), progress_(progress) {}
+  /// Closes the running stage (if any) and announces the next one.
+  void next(const std::string& key, const std::string& message) {
+    close();
+    key_ = key;
+    if (progress_) progress_(message);
+  }
+  void close() {
+    const auto now = std::chrono::steady_clock::now();
+    if (!key_.empty()) out_.emplace_back(key_, std::chrono::duration<double>(now - last_).count());
+    key_.clear();
+    last_ = now;
+  }
+
+ private:
+  std::vector<std::pair<std::string, double>>& out_;
+  const ProgressCallback& progress_;
+  std::string key_;
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+double surface_area(const TriangleSoup& soup) {
+  double area = 0;
+  for (const Triangle& t : soup.triangles)
+    area += 0.5 * (soup.points[static_cast<std::size_t>(t[1])] - soup.points[static_cast<std::size_t>(t[0])])
+                      .cross(soup.points[static_cast<std::size_t>(t[2])] - soup.points[static_cast<std::size_t>(t[0])])
+                      .norm();
+  return area;
+}
+
+double bounding_diagonal(const TriangleSoup& soup) {
+  Vec3 lo = soup.points.front(), hi = lo;
+  for (const Vec3& p : soup.points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return (hi - lo).norm();
+}
+
+/// Drops points no quad uses (corners of dropped cells).
+void compact(LatticeQuads& q) {
+  std::vector<int> index(q.points.size(), -1);
+  LatticeQuads out;
+  for (auto& quad : q.quads)
+    for (int& v : quad) {
+      if (index[static_cast<std::size_t>(v)] < 0) {
+        index[static_cast<std::size_t>(v)] = static_cast<int>(out.points.size());
+        out.points.push_back(q.points[static_cast<std::size_t>(v)]);
+        out.locations.push_back(q.locations[static_cast<std::size_t>(v)]);
+      }
+      v = index[static_cast<std::size_t>(v)];
+    }
+  out.quads = std::move(q.quads);
+  q = std::move(out);
+}
+
+}  // namespace
+
+QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, const ProgressCallback& progress) {
+  QuadMeshResult r;
+  Stages stages(r.timings, progress);
+
+  const double area = surface_area(soup);
+  r.size_requested = options.size > 0            ? options.size
+                     : options.size_relative > 0 ? options.size_relative * bounding_diagonal(soup)
+                                                 : bounding_diagonal(soup) / 60.0;
+  const double requested_size =
+      options.quads > 0 ? std::sqrt(area / static_cast<double>(options.quads)) : r.size_requested;
+  if (surface_adjacency(soup).boundary_loops.empty())
+    throw Error(ErrorCode::unsupported,
+                "quad meshing of closed surfaces is not implemented yet (their forms are: see `quadmesh forms`)");
+  auto remesh = [&](TriangleSoup& s) {
+    RemeshOptions remesh_options;
+    remesh_options.target_edge_length =
+        options.remesh_size > 0 ? options.remesh_size : std::min(0.4 * mean_edge_length(s), requested_size / 3);
+    stages.next("remeshing", fmt::format("remeshing isotropically (edge length {:.4g})",
+                                         remesh_options.target_edge_length));
+    s = remesh_isotropic(s, remesh_options);
+    r.remeshed = true;
+  };
+  if (options.remesh == RemeshPolicy::always) remesh(soup);
+  stages.next("forms", "computing symmetric holomorphic forms");
+  r.chords_split = split_boundary_chords(soup);
+  SymmetricForms forms = compute_symmetric_forms(to_surface_mesh(soup));
+  r.input_hodge_star_squared = forms.residuals.hodge_star_squared;
+  if (options.remesh == RemeshPolicy::automatic && forms.residuals.hodge_star_squared > 0.1) {
+    remesh(soup);
+    stages.next("forms", fmt::format("computing the forms again (||Lambda^2 + I|| was {:.3g})",
+                                      r.input_hodge_star_squared));
+    r.chords_split += split_boundary_chords(soup);
+    forms = compute_symmetric_forms(to_surface_mesh(soup));
+  }
+  r.doubled_genus = forms.doubled_genus;
+  r.residuals = forms.residuals;
+  std::vector<FaceMap> basis = symmetric_face_maps(forms, soup);
+  const int G = static_cast<int>(basis.size());
+
+  stages.next("form_choice", "choosing the form");
+  if (!options.coefficients.empty()) {
+    if (static_cast<int>(options.coefficients.size()) != G)
+      throw Error(ErrorCode::bad_input,
+                  fmt::format("--coeffs has {} values but the surface has {} symmetric forms",
+                              options.coefficients.size(), G));
+    r.coefficients = Eigen::Map<const Eigen::VectorXd>(options.coefficients.data(), G);
+    if (r.coefficients.norm() == 0) throw Error(ErrorCode::bad_input, "--coeffs: all coefficients are 0");
+    r.coefficients.normalize();
+  } else if (options.form >= 0) {
+    if (options.form >= G)
+      throw Error(ErrorCode::bad_input,
+                  fmt::format("--form {}: the surface has {} symmetric forms (0 to {})", options.form, G, G - 1));
+    r.coefficients = Eigen::VectorXd::Unit(G, options.form);
+  } else {
+    r.coefficients = most_uniform_combination(soup, basis);
+  }
+  r.uniformity = uniformity_ratio(soup, basis, r.coefficients);
+  FaceMap h = linear_combination(basis, r.coefficients);
+  if (total_image_area(h) < 0) {  // keep the input's orientation
+    h = conjugated(h);
+    for (FaceMap& b : basis) b = conjugated(b);
+  }
+
+  // scale: quads ~ area / size^2 = s^2 sum |h|^2 dA
+  r.expected_quads = options.quads > 0 ? static_cast<double>(options.quads)
+                                       : area / (r.size_requested * r.size_requested);
+  r.scale = std::sqrt(r.expected_quads / image_area_sum(h));
+  {
+    // at least 4 quad edges on every boundary loop
+    SurfaceAdjacency adjacency = surface_adjacency(soup);
+    for (const auto& loop : adjacency.boundary_loops) {
+      double variation = 0;
+      for (std::size_t i = 0; i < loop.size(); ++i)
+        variation += std::abs(edge_value(soup, adjacency, h, loop[i], loop[(i + 1) % loop.size()]).real());
+      if (variation > 0 && r.scale * variation < 4.5) r.scale = 4.5 / variation;
+    }
+  }
+  r.size = std::sqrt(area / (r.scale * r.scale * image_area_sum(h)));
+  FaceMap target = scaled(h, r.scale);
+
+  stages.next("zeros", "placing the zeros at vertices");
+  {
+    const SurfaceAdjacency adjacency = surface_adjacency(soup);
+    r.zeros = map_zeros(soup, adjacency, target);
+  }
+  for (const MapZero& z : r.zeros.zeros)
+    if (z.order > 0 && z.representative >= 0) r.zero_vertices.push_back({z.representative, z.order, z.on_boundary});
+  r.zero_vertices = merge_close_zeros(soup, target, r.zero_vertices, 1.0);
+  for (const ZeroVertex& c : boundary_corners(soup, options.corner_angle_deg, 0.5 * r.size, r.zero_vertices))
+    r.zero_vertices.push_back(c);
+  {
+    std::vector<FaceMap*> maps{&target};
+    for (FaceMap& b : basis) maps.push_back(&b);
+    r.star_splits = refine_zero_stars(soup, maps, r.zero_vertices);
+  }
+
+  stages.next("quantization", "quantizing (integer periods, boundary levels, zeros and corners on the lattice)");
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  PeriodLoops loops;
+  {
+    const NamedLoops named = named_loops(to_surface_mesh(soup));
+    loops.boundaries = named.boundaries;
+    loops.bridges = named.bridges;
+    loops.handles = named.handles;
+  }
+  r.quantization = quantize(soup, adjacency, target, basis, r.zero_vertices, loops);
+  if (r.quantization.flipped > 0) {
+    stages.next("untangling", fmt::format("untangling {} folded triangles", r.quantization.flipped));
+    std::vector<char> pinned(soup.points.size(), 0);
+    for (const ZeroVertex& z : r.zero_vertices) pinned[static_cast<std::size_t>(z.vertex)] = 1;
+    for (const ZeroVertex& z : r.zero_vertices) {
+      // the cone's and its model star (fold-free by construction; an average
+      // cannot reproduce an image angle other than 2 pi)
+      for (int v : vertex_ring(soup, adjacency, z.vertex).neighbours) if (!pinned[static_cast<std::size_t>(v)]) pinned[static_cast<std::size_t>(v)] = 2;
+    }
+    r.untangle = untangle(soup, adjacency, r.quantization.param, pinned);
+  }
+
+  if (options.rotate)  // i h: a quarter turn of the plane maps the lattice onto itself
+    r.quantization.param = scaled(r.quantization.param, Complex(0, 1));
+  stages.next("extraction", "extracting the quads");
+  r.quads = extract_lattice_quads(soup, adjacency, r.quantization.param, r.extraction);
+  compact(r.quads);
+  std::vector<int> loop_of(soup.points.size(), -1);
+  for (std::size_t k = 0; k < loops.boundaries.size(); ++k)
+    for (int v : loops.boundaries[k]) loop_of[static_cast<std::size_t>(v)] = static_cast<int>(k);
+  for (const SurfaceLocation& loc : r.quads.locations) {
+    int loop = -1;
+    if (loc.kind == SurfaceLocation::Kind::vertex) loop = loop_of[static_cast<std::size_t>(loc.a)];
+    if (loc.kind == SurfaceLocation::Kind::edge && adjacency.is_boundary_edge(loc.a, loc.b))
+      loop = loop_of[static_cast<std::size_t>(loc.a)];
+    r.boundary_loop_of_point.push_back(loop);
+  }
+  stages.close();
+  r.surface = std::move(soup);
+  return r;
+}
+
+}  // namespace qm

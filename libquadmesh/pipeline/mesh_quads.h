@@ -1,0 +1,72 @@
+// The whole quad-meshing job on an analysed surface (method.md sections 1-9):
+// symmetric forms, the choice of h and of its scale, zeros as vertices,
+// quantization, extraction. Tools add reading, writing and reporting around it.
+#pragma once
+
+#include "libquadmesh/extract/lattice_quads.h"
+#include "libquadmesh/forms/symmetric_forms.h"
+#include "libquadmesh/param/map_zeros.h"
+#include "libquadmesh/param/quantization.h"
+#include "libquadmesh/param/untangle.h"
+
+#include <functional>
+#include <string>
+
+namespace qm {
+
+/// When to remesh the input isotropically before the forms (forms/remesh.h).
+enum class RemeshPolicy {
+  automatic,  ///< when ||Lambda^2 + I|| > 0.1 on the input (the forms are then inaccurate)
+  always,
+  never,
+};
+
+struct QuadMeshOptions {
+  RemeshPolicy remesh = RemeshPolicy::automatic;
+  double remesh_size = 0.0;  ///< target edge length of the remeshing; 0: min(0.4 x mean edge, size / 3)
+  /// Which h: -1 "auto" (the most uniform |h|, param/form_choice.h), k >= 0 the
+  /// k-th symmetric basis form; `coefficients` (when not empty) wins over both.
+  int form = -1;
+  std::vector<double> coefficients;
+  /// Use i h: the grid turned by 90 degrees. The quantization is that of h (its
+  /// boundaries are the horizontal ones) and the lattice is invariant under a
+  /// quarter turn, so the quads are the same; U and V exchange their roles.
+  bool rotate = false;
+  double size = 0.0;        ///< target quad edge length; 0: size_relative or 1/60 of the bounding-box diagonal
+  double size_relative = 0.0;  ///< target edge length as a fraction of the bounding-box diagonal
+  std::size_t quads = 0;    ///< target quad count; wins over size when not 0
+  double corner_angle_deg = 30.0;
+};
+
+struct QuadMeshResult {
+  TriangleSoup surface;          ///< S as meshed (chords and zero stars split); locations refer to it
+  LatticeQuads quads;            ///< the quad mesh (unreferenced points removed)
+  std::vector<int> boundary_loop_of_point;  ///< per quad point: the input boundary loop it lies on, or -1
+  int doubled_genus = 0;
+  FormsResiduals residuals;      ///< of the forms used
+  bool remeshed = false;         ///< the input was remeshed first
+  double input_hodge_star_squared = 0;  ///< ||Lambda^2 + I|| on the input triangulation
+  Eigen::VectorXd coefficients;  ///< h = sum c_k h_k (unit vector), before rotation
+  double uniformity = 0;         ///< R(c) of form_choice.h (1 = uniform |h|)
+  double scale = 0;              ///< s: the grid is the integer lattice of s h
+  double size = 0;               ///< the target edge length that s implies
+  double size_requested = 0;
+  double expected_quads = 0;     ///< area / size^2
+  MapZeros zeros;                ///< of s h before quantization
+  std::vector<ZeroVertex> zero_vertices;  ///< the zeros placed at vertices of `surface`, then the sharp corners
+  std::size_t chords_split = 0, star_splits = 0;
+  Quantization quantization;     ///< with the parameterization (after untangling)
+  UntangleReport untangle;       ///< the local repair of folds left by the quantization
+  ExtractionReport extraction;
+  std::vector<std::pair<std::string, double>> timings;  ///< seconds per stage
+};
+
+using ProgressCallback = std::function<void(const std::string&)>;
+
+/// Meshes a supported surface with boundary (an AnalyzedSurface's soup). Throws
+/// qm::Error(unsupported) for closed surfaces (not implemented yet), (bad_input)
+/// for options that do not fit the surface, (solver) when a stage fails.
+QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options,
+                          const ProgressCallback& progress = {});
+
+}  // namespace qm

@@ -1,0 +1,372 @@
+#include "libquadmesh/quality/quad_quality.h"
+
+#include "libquadmesh/core/error.h"
+#include "libquadmesh/core/union_find.h"
+#include "libquadmesh/quality/hausdorff.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <unordered_map>
+
+namespace qm {
+
+namespace {
+
+constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+double angle_between_deg(const Vec3& a, const Vec3& b) {
+  // atan2 keeps full precision near 0 and 180 degrees, where acos does not
+  return std::atan2(a.cross(b).norm(), a.dot(b)) * kDegrees;
+}
+
+/// Value at fraction p of the sorted values, interpolated linearly between order
+/// statistics (position p (n - 1)); NaN for no values.
+double percentile(std::vector<double> values, double p) {
+  if (values.empty()) return kNaN;
+  std::sort(values.begin(), values.end());
+  const double position = p * static_cast<double>(values.size() - 1);
+  const auto below = static_cast<std::size_t>(std::floor(position));
+  const std::size_t above = std::min(below + 1, values.size() - 1);
+  const double t = position - static_cast<double>(below);
+  return (1 - t) * values[below] + t * values[above];
+}
+
+double mean(const std::vector<double>& values) {
+  if (values.empty()) return kNaN;
+  return std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
+}
+
+double max_of(const std::vector<double>& values) {
+  return values.empty() ? kNaN : *std::max_element(values.begin(), values.end());
+}
+
+double min_of(const std::vector<double>& values) {
+  return values.empty() ? kNaN : *std::min_element(values.begin(), values.end());
+}
+
+/// Vector area of a polygon: half the sum of p_i x p_{i+1} (Newell); for a quad it
+/// equals (p2 - p0) x (p3 - p1) / 2.
+Vec3 vector_area(const PolygonMesh& mesh, const std::vector<int>& face) {
+  Vec3 sum = Vec3::Zero();
+  for (std::size_t i = 0; i < face.size(); ++i)
+    sum += mesh.points[static_cast<std::size_t>(face[i])].cross(
+        mesh.points[static_cast<std::size_t>(face[(i + 1) % face.size()])]);
+  return 0.5 * sum;
+}
+
+/// One distinct (undirected) edge a < b and the face corners at its ends, per use.
+struct EdgeRecord {
+  int a = -1, b = -1;
+  int uses = 0;
+  int uses_a_to_b = 0;         ///< uses in the direction a -> b
+  std::vector<int> corners_a;  ///< per use: the global corner id of the face at a
+  std::vector<int> corners_b;  ///< per use: the global corner id of the face at b
+};
+
+struct EdgeTable {
+  std::vector<EdgeRecord> edges;
+  std::vector<std::vector<int>> edges_of_vertex;
+};
+
+EdgeTable build_edges(const PolygonMesh& mesh, const std::vector<int>& first_corner) {
+  EdgeTable table;
+  table.edges_of_vertex.resize(mesh.points.size());
+  std::unordered_map<std::uint64_t, int> index;
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const std::vector<int>& face = mesh.faces[f];
+    const int n = static_cast<int>(face.size());
+    for (int c = 0; c < n; ++c) {
+      const int from = face[static_cast<std::size_t>(c)];
+      const int to = face[static_cast<std::size_t>((c + 1) % n)];
+      if (from == to) continue;  // a repeated corner: no edge
+      const int a = std::min(from, to), b = std::max(from, to);
+      const std::uint64_t key = (static_cast<std::uint64_t>(a) << 32) |
+                                static_cast<std::uint64_t>(static_cast<std::uint32_t>(b));
+      auto [it, inserted] = index.emplace(key, static_cast<int>(table.edges.size()));
+      if (inserted) {
+        EdgeRecord e;
+        e.a = a;
+        e.b = b;
+        table.edges.push_back(e);
+        table.edges_of_vertex[static_cast<std::size_t>(a)].push_back(it->second);
+        table.edges_of_vertex[static_cast<std::size_t>(b)].push_back(it->second);
+      }
+      EdgeRecord& e = table.edges[static_cast<std::size_t>(it->second)];
+      ++e.uses;
+      const int corner_from = first_corner[f] + c;
+      const int corner_to = first_corner[f] + (c + 1) % n;
+      if (from == a) {
+        ++e.uses_a_to_b;
+        e.corners_a.push_back(corner_from);
+        e.corners_b.push_back(corner_to);
+      } else {
+        e.corners_a.push_back(corner_to);
+        e.corners_b.push_back(corner_from);
+      }
+    }
+  }
+  return table;
+}
+
+/// Closed cycles of boundary edges. At each end a boundary edge belongs to one fan
+/// (a root of `fans`); a walk enters a point through one boundary edge and leaves
+/// through the other boundary edge of the same fan, so loops touching at a pinched
+/// point are told apart. Walks that reach a fan without exactly two boundary edges
+/// are not counted.
+int count_boundary_loops(const EdgeTable& table, UnionFind& fans) {
+  std::unordered_map<int, std::vector<int>> boundary_edges_of_fan;
+  std::vector<int> boundary;
+  for (std::size_t e = 0; e < table.edges.size(); ++e) {
+    const EdgeRecord& r = table.edges[e];
+    if (r.uses != 1) continue;
+    boundary.push_back(static_cast<int>(e));
+    boundary_edges_of_fan[fans.find(r.corners_a[0])].push_back(static_cast<int>(e));
+    boundary_edges_of_fan[fans.find(r.corners_b[0])].push_back(static_cast<int>(e));
+  }
+  std::vector<char> visited(table.edges.size(), 0);
+  int loops = 0;
+  for (int start : boundary) {
+    if (visited[static_cast<std::size_t>(start)]) continue;
+    int edge = start;
+    int fan = fans.find(table.edges[static_cast<std::size_t>(start)].corners_b[0]);
+    bool closed = false;
+    while (true) {
+      visited[static_cast<std::size_t>(edge)] = 1;
+      const std::vector<int>& at = boundary_edges_of_fan[fan];
+      if (at.size() != 2) break;
+      const int next = at[0] == edge ? at[1] : at[0];
+      if (next == start) {
+        closed = true;
+        break;
+      }
+      if (visited[static_cast<std::size_t>(next)]) break;
+      const EdgeRecord& r = table.edges[static_cast<std::size_t>(next)];
+      // leave `next` through its end that is not in the fan we came through
+      const int fan_a = fans.find(r.corners_a[0]);
+      fan = fan_a == fan ? fans.find(r.corners_b[0]) : fan_a;
+      edge = next;
+    }
+    if (closed) ++loops;
+  }
+  return loops;
+}
+
+}  // namespace
+
+std::vector<Vec3> vertex_normals(const PolygonMesh& mesh) {
+  std::vector<Vec3> normals(mesh.points.size(), Vec3::Zero());
+  for (const std::vector<int>& face : mesh.faces) {
+    const Vec3 area = vector_area(mesh, face);
+    for (int v : face)
+      normals[static_cast<std::size_t>(v)] += area;
+  }
+  for (Vec3& n : normals) {
+    const double length = n.norm();
+    n = length > 0 ? Vec3(n / length) : Vec3::Zero();
+  }
+  return normals;
+}
+
+double corner_scaled_jacobian(const Vec3& prev, const Vec3& p, const Vec3& next, const Vec3& n) {
+  const Vec3 e1 = next - p, e2 = prev - p;
+  const double lengths = e1.norm() * e2.norm();
+  if (lengths == 0) return 0;
+  return e1.cross(e2).dot(n) / lengths;
+}
+
+double corner_angle_deg(const Vec3& prev, const Vec3& p, const Vec3& next) {
+  return angle_between_deg(next - p, prev - p);
+}
+
+double quad_warp_deg(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const double along_ac = angle_between_deg((b - a).cross(c - a), (c - a).cross(d - a));
+  const double along_bd = angle_between_deg((c - b).cross(d - b), (d - b).cross(a - b));
+  return std::max(along_ac, along_bd);
+}
+
+QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference) {
+  QuadQuality q;
+  const std::size_t point_count = mesh.points.size();
+  std::vector<int> first_corner(mesh.faces.size() + 1, 0);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const std::vector<int>& face = mesh.faces[f];
+    QM_ASSERT_MSG(face.size() >= 3, "a face has fewer than 3 corners");
+    for (int v : face)
+      QM_ASSERT_MSG(v >= 0 && static_cast<std::size_t>(v) < point_count,
+                    "a face refers to a point that does not exist");
+    first_corner[f + 1] = first_corner[f] + static_cast<int>(face.size());
+    if (face.size() == 3)
+      ++q.triangles;
+    else if (face.size() == 4)
+      ++q.quads;
+    else
+      ++q.other_faces;
+  }
+  const auto point = [&](int v) -> const Vec3& { return mesh.points[static_cast<std::size_t>(v)]; };
+
+  // ---- per quad: scaled Jacobian, corner angles, aspect ratio, warp
+  const std::vector<Vec3> normals = vertex_normals(mesh);
+  std::vector<double> jacobians, angle_devs, aspects, warps;
+  for (const std::vector<int>& face : mesh.faces) {
+    if (face.size() != 4) continue;
+    const Vec3& p0 = point(face[0]);
+    const Vec3& p1 = point(face[1]);
+    const Vec3& p2 = point(face[2]);
+    const Vec3& p3 = point(face[3]);
+    const Vec3 own = (p2 - p0).cross(p3 - p1);
+    const Vec3 own_normal = own.norm() > 0 ? Vec3(own.normalized()) : Vec3::Zero();
+    double jacobian = std::numeric_limits<double>::infinity();
+    double shortest = std::numeric_limits<double>::infinity(), longest = 0;
+    for (int c = 0; c < 4; ++c) {
+      const Vec3& prev = point(face[static_cast<std::size_t>((c + 3) % 4)]);
+      const Vec3& p = point(face[static_cast<std::size_t>(c)]);
+      const Vec3& next = point(face[static_cast<std::size_t>((c + 1) % 4)]);
+      const Vec3& vn = normals[static_cast<std::size_t>(face[static_cast<std::size_t>(c)])];
+      const Vec3& n = vn.squaredNorm() > 0 ? vn : own_normal;
+      jacobian = std::min(jacobian, corner_scaled_jacobian(prev, p, next, n));
+      angle_devs.push_back(std::abs(corner_angle_deg(prev, p, next) - 90.0));
+      const double length = (next - p).norm();
+      shortest = std::min(shortest, length);
+      longest = std::max(longest, length);
+    }
+    jacobians.push_back(jacobian);
+    if (jacobian <= 0) ++q.inverted;
+    aspects.push_back(shortest > 0 ? longest / shortest : std::numeric_limits<double>::infinity());
+    warps.push_back(quad_warp_deg(p0, p1, p2, p3));
+  }
+  q.min_scaled_jacobian = min_of(jacobians);
+  q.mean_scaled_jacobian = mean(jacobians);
+  q.p01_scaled_jacobian = percentile(jacobians, 0.01);
+  q.angle_dev_mean = mean(angle_devs);
+  double squares = 0;
+  for (double d : angle_devs)
+    squares += d * d;
+  q.angle_dev_rms =
+      angle_devs.empty() ? kNaN : std::sqrt(squares / static_cast<double>(angle_devs.size()));
+  q.angle_dev_p99 = percentile(angle_devs, 0.99);
+  q.angle_dev_max = max_of(angle_devs);
+  q.aspect_ratio_mean = mean(aspects);
+  q.aspect_ratio_max = max_of(aspects);
+  q.warp_mean = mean(warps);
+  q.warp_max = max_of(warps);
+
+  // ---- edges, fans, topology
+  const EdgeTable table = build_edges(mesh, first_corner);
+  UnionFind fans(static_cast<std::size_t>(first_corner.back()));
+  std::vector<char> on_boundary(point_count, 0);
+  for (const EdgeRecord& e : table.edges) {
+    if (e.uses > 2) q.manifold = false;
+    if (e.uses == 1)
+      on_boundary[static_cast<std::size_t>(e.a)] = on_boundary[static_cast<std::size_t>(e.b)] = 1;
+    if (e.uses == 2) {
+      if (e.uses_a_to_b != 1) q.consistently_oriented = false;
+      fans.unite(e.corners_a[0], e.corners_a[1]);
+      fans.unite(e.corners_b[0], e.corners_b[1]);
+    }
+  }
+  // corners per point; the fans of a point are the distinct roots of its corners
+  std::vector<std::vector<int>> corners_of_point(point_count);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+    for (std::size_t c = 0; c < mesh.faces[f].size(); ++c)
+      corners_of_point[static_cast<std::size_t>(mesh.faces[f][c])].push_back(first_corner[f] +
+                                                                             static_cast<int>(c));
+  for (const std::vector<int>& corners : corners_of_point) {
+    if (corners.empty()) continue;
+    ++q.vertices;
+    const int root = fans.find(corners[0]);
+    for (int c : corners)
+      if (fans.find(c) != root) q.manifold = false;
+  }
+  q.euler_characteristic = static_cast<int>(q.vertices) - static_cast<int>(table.edges.size()) +
+                           static_cast<int>(mesh.faces.size());
+  q.boundary_loops = count_boundary_loops(table, fans);
+
+  // ---- valences
+  std::vector<double> angle_sum(point_count, 0.0);
+  for (const std::vector<int>& face : mesh.faces) {
+    const std::size_t n = face.size();
+    for (std::size_t c = 0; c < n; ++c)
+      angle_sum[static_cast<std::size_t>(face[c])] +=
+          corner_angle_deg(point(face[(c + n - 1) % n]), point(face[c]), point(face[(c + 1) % n]));
+  }
+  for (std::size_t v = 0; v < point_count; ++v) {
+    if (corners_of_point[v].empty()) continue;
+    if (on_boundary[v]) {
+      const int faces = static_cast<int>(corners_of_point[v].size());
+      ++q.valence_boundary[faces];
+      const int ideal = std::max(1, static_cast<int>(std::lround(angle_sum[v] / 90.0)));
+      if (faces != ideal) ++q.irregular_boundary;
+    } else {
+      const int edges = static_cast<int>(table.edges_of_vertex[v].size());
+      ++q.valence_interior[edges];
+      if (edges != 4) ++q.irregular_interior;
+    }
+  }
+
+  // ---- edge lengths
+  std::vector<double> lengths;
+  lengths.reserve(table.edges.size());
+  for (const EdgeRecord& e : table.edges)
+    lengths.push_back((point(e.b) - point(e.a)).norm());
+  q.edge_length_min = min_of(lengths);
+  q.edge_length_mean = mean(lengths);
+  q.edge_length_max = max_of(lengths);
+
+  // ---- boundary alignment: interior edges against the tangent prev -> next
+  std::vector<double> alignment;
+  for (std::size_t v = 0; v < point_count; ++v) {
+    if (!on_boundary[v]) continue;
+    std::vector<int> neighbours;
+    for (int e : table.edges_of_vertex[v]) {
+      const EdgeRecord& r = table.edges[static_cast<std::size_t>(e)];
+      if (r.uses == 1) neighbours.push_back(r.a == static_cast<int>(v) ? r.b : r.a);
+    }
+    if (neighbours.size() != 2) continue;  // a pinched point: no single tangent
+    const Vec3 tangent = point(neighbours[1]) - point(neighbours[0]);
+    if (tangent.squaredNorm() == 0) continue;
+    for (int e : table.edges_of_vertex[v]) {
+      const EdgeRecord& r = table.edges[static_cast<std::size_t>(e)];
+      if (r.uses != 2) continue;
+      const Vec3 edge = point(r.a == static_cast<int>(v) ? r.b : r.a) - mesh.points[v];
+      alignment.push_back(std::abs(angle_between_deg(edge, tangent) - 90.0));
+    }
+  }
+  q.boundary_alignment_mean = mean(alignment);
+  q.boundary_alignment_max = max_of(alignment);
+
+  // ---- Hausdorff distance to the reference
+  q.hausdorff_rel = q.hausdorff_forward_rel = q.hausdorff_backward_rel = kNaN;
+  if (reference != nullptr) {
+    std::vector<Triangle> split;  // fans from corner 0: quads along the diagonal 0-2
+    for (const std::vector<int>& face : mesh.faces)
+      for (std::size_t i = 1; i + 1 < face.size(); ++i)
+        split.push_back({face[0], face[i], face[i + 1]});
+    std::vector<Vec3> samples = surface_samples(mesh.points, split);
+    for (const std::vector<int>& face : mesh.faces) {
+      if (face.size() == 3) continue;  // the triangle's centroid is already a sample
+      Vec3 centroid = Vec3::Zero();
+      for (int v : face)
+        centroid += point(v);
+      samples.push_back(centroid / static_cast<double>(face.size()));
+    }
+    HausdorffDistance h;
+    h.forward = max_distance_to_surface(samples, reference->points, reference->triangles);
+    h.backward = max_distance_to_surface(surface_samples(reference->points, reference->triangles),
+                                         mesh.points, split);
+    const double diagonal = bounding_box_diagonal(reference->points, reference->triangles);
+    if (diagonal > 0) {
+      q.hausdorff_forward_rel = h.forward / diagonal;
+      q.hausdorff_backward_rel = h.backward / diagonal;
+      q.hausdorff_rel = h.value() / diagonal;
+    }
+  }
+  return q;
+}
+
+}  // namespace qm

@@ -1,0 +1,107 @@
+// Quality of a quad (or quad-dominant) mesh: what every result reports
+// (method.md section 10). Shape per quad (scaled Jacobian, corner angles, aspect
+// ratio, warp), valences against the regular grid, topology checks, edge lengths,
+// alignment with the boundary and the two-sided Hausdorff distance to the input.
+//
+// Conventions: faces are listed counterclockwise seen from the front, so the
+// scaled Jacobian of a well-shaped quad is positive with respect to the vertex
+// normals; angles are in degrees; statistics over an empty set are NaN.
+#pragma once
+
+#include "libquadmesh/core/triangle_soup.h"
+
+#include <cstddef>
+#include <map>
+#include <vector>
+
+namespace qm {
+
+/// A polygon mesh as read from a file: faces of 3, 4 (or more) point indices,
+/// counterclockwise seen from the front.
+struct PolygonMesh {
+  std::vector<Vec3> points;
+  std::vector<std::vector<int>> faces;
+};
+
+/// Everything method.md section 10 asks of a quad mesh. NaN: not defined for this
+/// mesh (no quads, no boundary, no reference).
+struct QuadQuality {
+  // counts
+  std::size_t vertices = 0;     ///< points referenced by a face
+  std::size_t quads = 0;        ///< faces with 4 corners
+  std::size_t triangles = 0;    ///< faces with 3 corners
+  std::size_t other_faces = 0;  ///< faces with more than 4 corners
+  std::size_t inverted = 0;     ///< quads whose min scaled Jacobian is <= 0
+
+  // scaled Jacobian of quads (min over the 4 corners of each quad)
+  double min_scaled_jacobian = 0;   ///< smallest over the quads (1 = square, <= 0 = inverted)
+  double mean_scaled_jacobian = 0;  ///< mean over the quads
+  double p01_scaled_jacobian = 0;   ///< 1st percentile over the quads
+
+  // deviation |angle - 90| of the quad corner angles, degrees
+  double angle_dev_mean = 0;  ///< mean over all quad corners
+  double angle_dev_rms = 0;   ///< root mean square over all quad corners
+  double angle_dev_p99 = 0;   ///< 99th percentile over all quad corners
+  double angle_dev_max = 0;   ///< largest over all quad corners
+
+  // shape of quads
+  double aspect_ratio_mean = 0;  ///< mean of longest / shortest edge per quad
+  double aspect_ratio_max = 0;   ///< largest longest / shortest edge (inf for a zero edge)
+  double warp_mean = 0;          ///< mean warp per quad, degrees (0 = planar)
+  double warp_max = 0;           ///< largest warp, degrees
+
+  // valences
+  std::map<int, std::size_t> valence_interior;  ///< edges at an interior vertex -> vertex count
+  std::map<int, std::size_t> valence_boundary;  ///< faces at a boundary vertex -> vertex count
+  std::size_t irregular_interior = 0;           ///< interior vertices with valence != 4
+  std::size_t irregular_boundary = 0;           ///< boundary vertices whose face count is not
+                                                ///< max(1, round(corner angle sum / 90 deg))
+
+  // topology
+  int euler_characteristic = 0;       ///< V - E + F over the referenced vertices
+  int boundary_loops = 0;             ///< closed cycles of boundary edges (one face each)
+  bool manifold = true;               ///< edges have <= 2 faces, each vertex's faces form one fan
+  bool consistently_oriented = true;  ///< every interior edge used once in each direction
+
+  // edge lengths (every distinct edge of every face)
+  double edge_length_min = 0;   ///< shortest edge
+  double edge_length_mean = 0;  ///< mean edge length
+  double edge_length_max = 0;   ///< longest edge
+
+  // alignment of the interior edges that leave a boundary vertex, degrees
+  double boundary_alignment_mean = 0;  ///< mean |angle(edge, boundary tangent) - 90|
+  double boundary_alignment_max = 0;   ///< largest |angle(edge, boundary tangent) - 90|
+
+  // two-sided Hausdorff distance to the reference, relative to its bounding-box
+  // diagonal (NaN without a reference)
+  double hausdorff_rel = 0;           ///< max(forward, backward) / diagonal
+  double hausdorff_forward_rel = 0;   ///< farthest mesh sample from the reference / diagonal
+  double hausdorff_backward_rel = 0;  ///< farthest reference sample from the mesh / diagonal
+};
+
+/// Measures `mesh` (faces CCW seen from the front; degenerate faces are measured,
+/// not rejected) and, when `reference` is not null, its two-sided Hausdorff
+/// distance to that triangulated surface (hausdorff.h; quads split along 0-2).
+/// Every field is documented in QuadQuality.
+QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference);
+
+/// The area-weighted vertex normals of a polygon mesh: the normalized sum of the
+/// vector areas of the faces around each point (zero for isolated points or where
+/// the sum vanishes).
+std::vector<Vec3> vertex_normals(const PolygonMesh& mesh);
+
+/// Scaled Jacobian of the corner at `p` with edges to `next` and `prev` (the
+/// following and the preceding corner of a CCW face), with respect to the unit
+/// normal `n`: ((next - p) x (prev - p)) . n / (|next - p| |prev - p|), in [-1, 1];
+/// 1 for a right angle, <= 0 for a corner folded over. 0 if an edge has zero length.
+double corner_scaled_jacobian(const Vec3& prev, const Vec3& p, const Vec3& next, const Vec3& n);
+
+/// The angle at `p` between the edges to `prev` and `next`, in degrees in [0, 180]
+/// (0 if an edge has zero length).
+double corner_angle_deg(const Vec3& prev, const Vec3& p, const Vec3& next);
+
+/// Warp of the quad (a, b, c, d), degrees: the larger over both diagonals of the
+/// angle between the normals of the two triangles (0 = planar).
+double quad_warp_deg(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+
+}  // namespace qm

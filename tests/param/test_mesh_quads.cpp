@@ -1,0 +1,147 @@
+// The quad mesher end to end (method.md sections 7-10): quantization invariants
+// read off the parameterization, and the properties every output must have.
+#include "io/read_surface.h"
+#include "libquadmesh/core/error.h"
+#include "libquadmesh/pipeline/mesh_quads.h"
+#include "libquadmesh/quality/quad_quality.h"
+#include "libquadmesh/topology/topology_report.h"
+#include "tests/support/test_meshes.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+using namespace qm;
+
+namespace {
+
+PolygonMesh polygon_mesh(const LatticeQuads& q) {
+  PolygonMesh m;
+  m.points = q.points;
+  for (const auto& quad : q.quads) m.faces.push_back({quad[0], quad[1], quad[2], quad[3]});
+  return m;
+}
+
+double distance_to_integer(double x) { return std::abs(x - std::round(x)); }
+
+/// Valence (number of quads) of every quad-mesh point.
+std::vector<int> quads_at(const LatticeQuads& q) {
+  std::vector<int> count(q.points.size(), 0);
+  for (const auto& quad : q.quads)
+    for (int v : quad) ++count[static_cast<std::size_t>(v)];
+  return count;
+}
+
+/// What every result must satisfy (issue 4, item 9), checked on one input.
+void check_result(const TriangleSoup& input, const QuadMeshResult& r, int chi, int loops) {
+  const QuadQuality q = quad_quality(polygon_mesh(r.quads), &input);
+  CHECK(q.quads == r.quads.quads.size());
+  CHECK(q.triangles == 0);
+  CHECK(q.inverted == 0);
+  CHECK(q.manifold);
+  CHECK(q.consistently_oriented);
+  CHECK(q.euler_characteristic == chi);
+  CHECK(q.boundary_loops == loops);
+  CHECK(q.min_scaled_jacobian >= 0.3);
+  CHECK(q.angle_dev_mean <= 5.0);
+  CHECK(r.extraction.incomplete_cells == 0);
+  CHECK(r.extraction.bad_triangles == 0);
+  // interior irregular vertices are exactly the interior zeros, of valence 4 (m + 1)
+  std::size_t interior_zeros = 0;
+  for (const ZeroVertex& z : r.zero_vertices) interior_zeros += !z.on_boundary && !z.corner;
+  CHECK(q.irregular_interior == interior_zeros);
+  const std::vector<int> valence = quads_at(r.quads);
+  for (std::size_t v = 0; v < r.quads.points.size(); ++v) {
+    const SurfaceLocation& loc = r.quads.locations[v];
+    if (r.boundary_loop_of_point[v] >= 0 || valence[v] == 4) continue;
+    bool at_zero = false;
+    for (const ZeroVertex& z : r.zero_vertices)
+      if (!z.on_boundary && loc.kind == SurfaceLocation::Kind::vertex && loc.a == z.vertex) {
+        at_zero = true;
+        CHECK(valence[v] == 4 * (z.order + 1));
+      }
+    CHECK(at_zero);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("annulus: a singularity-free grid, integer periods, boundaries on integer levels") {
+  const TriangleSoup soup = test::annulus(1.0, 2.0, 12, 96);
+  QuadMeshOptions options;
+  options.quads = 400;
+  const QuadMeshResult r = mesh_quads(soup, options);
+  CHECK(r.zero_vertices.empty());
+  check_result(soup, r, 0, 2);
+  // within 15% of the quads asked for
+  CHECK(std::abs(static_cast<double>(r.quads.quads.size()) - 400.0) <= 0.15 * 400);
+  for (const LoopPeriod& p : r.quantization.periods) {
+    CHECK(distance_to_integer(p.after.real()) < 1e-9);
+    CHECK(distance_to_integer(p.after.imag()) < 1e-9);
+  }
+  // V is an integer at every boundary corner of the parameterization
+  const SurfaceAdjacency adjacency = surface_adjacency(r.surface);
+  double worst = 0;
+  for (std::size_t f = 0; f < r.surface.triangles.size(); ++f)
+    for (int i = 0; i < 3; ++i)
+      if (adjacency.boundary_vertex[static_cast<std::size_t>(r.surface.triangles[f][i])])
+        worst = std::max(worst, distance_to_integer(r.quantization.param.corners[f][i].imag()));
+  CHECK(worst < 1e-9);
+  // every quad vertex on the boundary lies on an input boundary edge (a chord of
+  // the circle, 96 sides) or vertex
+  const double sag = 1 - std::cos(M_PI / 96);
+  for (std::size_t v = 0; v < r.quads.points.size(); ++v)
+    if (r.boundary_loop_of_point[v] >= 0) {
+      const double radius = r.quads.points[v].norm();
+      const double circle = radius < 1.5 ? 1.0 : 2.0;
+      CHECK(radius <= circle + 1e-12);
+      CHECK(radius >= circle * (1 - sag) - 1e-12);
+    }
+}
+
+TEST_CASE("plate with two holes (CAD): one interior zero, corners on the lattice") {
+  io::ReadOptions read;
+  const TriangleSoup input = analyze_topology(io::read_surface(test::example("plate-two-holes.geo"), read).soup).soup;
+  const QuadMeshResult r = mesh_quads(input, {});
+  check_result(input, r, -1, 3);
+  CHECK(r.quantization.corners == 4);
+  CHECK(r.quantization.lattice_zeros == r.zero_vertices.size() - 4);
+  // zero orders add up to -2 chi on the double
+  CHECK(r.zeros.doubled_order_sum == 2);
+  CHECK(r.quantization.distortion < 0.01);
+}
+
+TEST_CASE("kitten with two holes: genus 1, two zeros of order 1") {
+  io::ReadOptions read;
+  const TriangleSoup input = analyze_topology(io::read_surface(test::shared_mesh("kitten-2holes.obj"), read).soup).soup;
+  QuadMeshOptions options;
+  options.size_relative = 0.015;
+  const QuadMeshResult r = mesh_quads(input, options);
+  check_result(input, r, -2, 2);
+  CHECK(r.zeros.doubled_order_sum == 4);
+}
+
+TEST_CASE("--form, --coeffs and --rotate choose the differential") {
+  const TriangleSoup soup = test::annulus(1.0, 2.0, 8, 64);
+  QuadMeshOptions plain;
+  plain.quads = 200;
+  QuadMeshOptions rotated = plain;
+  rotated.rotate = true;
+  const QuadMeshResult a = mesh_quads(soup, plain), b = mesh_quads(soup, rotated);
+  // i h: the parameterization turned by a quarter, the same quads
+  CHECK(b.quads.quads.size() == a.quads.quads.size());
+  const Complex za = a.quantization.param.corners[0][0], zb = b.quantization.param.corners[0][0];
+  CHECK(std::abs(zb - Complex(0, 1) * za) < 1e-12);
+  QuadMeshOptions first = plain;
+  first.form = 0;
+  QuadMeshOptions coeffs = plain;
+  coeffs.coefficients = {2.0};
+  CHECK(mesh_quads(soup, first).coefficients[0] == doctest::Approx(1.0));
+  CHECK(mesh_quads(soup, coeffs).quads.quads.size() == a.quads.quads.size());
+  QuadMeshOptions wrong;
+  wrong.coefficients = {1.0, 2.0};
+  CHECK_THROWS_AS(mesh_quads(soup, wrong), Error);
+  QuadMeshOptions bad_form;
+  bad_form.form = 3;
+  CHECK_THROWS_AS(mesh_quads(soup, bad_form), Error);
+}

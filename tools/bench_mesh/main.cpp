@@ -1,0 +1,47 @@
+// bench_mesh: stage times of the whole quad-meshing job (`quadmesh mesh` without
+// reading and writing), as ratios against its forms stage measured in the same
+// run (issue 4: the whole mesh stage within about 3x of the forms stage).
+//
+//   bench_mesh [FILE] [--size P%]
+// FILE defaults to the shared bunny-open-large.obj (278k triangles).
+#include "io/read_surface.h"
+#include "libquadmesh/pipeline/mesh_quads.h"
+#include "libquadmesh/topology/applicability.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <chrono>
+
+int main(int argc, char** argv) {
+  CLI::App app{"Stage times of the quad mesher against its forms stage"};
+  std::string file = std::string(QM_DATA_DIR) + "/bunny-open-large.obj";
+  double percent = 1.5;
+  app.add_option("FILE", file, "Input surface");
+  app.add_option("--size", percent, "Quad size in percent of the bounding-box diagonal")
+      ->check(CLI::PositiveNumber);
+  CLI11_PARSE(app, argc, argv);
+  try {
+    const qm::AnalyzedSurface surface = qm::analyze_topology(qm::io::read_surface(file).soup);
+    qm::require_supported(surface);
+    qm::QuadMeshOptions options;
+    options.size_relative = percent / 100.0;
+    const auto start = std::chrono::steady_clock::now();
+    const qm::QuadMeshResult r = qm::mesh_quads(surface.soup, options);
+    const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    double forms = 0;
+    for (const auto& [name, s] : r.timings)
+      if (name == "forms") forms += s;
+    fmt::print("input            {} ({} vertices, {} triangles, doubled genus {})\n", file,
+               surface.soup.points.size(), surface.soup.triangles.size(), r.doubled_genus);
+    fmt::print("output           {} quads at {}% of the diagonal\n", r.quads.quads.size(), percent);
+    fmt::print("forms stage      {:.3f} s  = 1.00\n", forms);
+    for (const auto& [name, s] : r.timings)
+      if (name != "forms") fmt::print("  {:<16} {:.3f} s  = {:.2f}\n", name, s, s / forms);
+    fmt::print("whole mesh job   {:.3f} s  = {:.2f} x the forms stage\n", total, total / forms);
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "bench_mesh: error: {}\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,63 @@
+#include "tools/common/quality_json.h"
+
+#include <cmath>
+#include <string>
+
+namespace qm::tools {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+/// nlohmann writes non-finite numbers as null already; this makes it explicit.
+Json number(double x) {
+  return std::isfinite(x) ? Json(x) : Json(nullptr);
+}
+
+Json histogram(const std::map<int, std::size_t>& counts) {
+  Json j = Json::object();
+  for (const auto& [valence, count] : counts)
+    j[std::to_string(valence)] = count;
+  return j;
+}
+
+}  // namespace
+
+Json quality_json(const QuadQuality& q) {
+  Json j;
+  j["vertices"] = q.vertices;
+  j["quads"] = q.quads;
+  j["triangles"] = q.triangles;
+  j["other_faces"] = q.other_faces;
+  j["inverted"] = q.inverted;
+  j["min_scaled_jacobian"] = number(q.min_scaled_jacobian);
+  j["mean_scaled_jacobian"] = number(q.mean_scaled_jacobian);
+  j["p01_scaled_jacobian"] = number(q.p01_scaled_jacobian);
+  j["angle_dev_mean"] = number(q.angle_dev_mean);
+  j["angle_dev_rms"] = number(q.angle_dev_rms);
+  j["angle_dev_p99"] = number(q.angle_dev_p99);
+  j["angle_dev_max"] = number(q.angle_dev_max);
+  j["aspect_ratio_mean"] = number(q.aspect_ratio_mean);
+  j["aspect_ratio_max"] = number(q.aspect_ratio_max);
+  j["warp_mean"] = number(q.warp_mean);
+  j["warp_max"] = number(q.warp_max);
+  j["valence_interior"] = histogram(q.valence_interior);
+  j["valence_boundary"] = histogram(q.valence_boundary);
+  j["irregular_interior"] = q.irregular_interior;
+  j["irregular_boundary"] = q.irregular_boundary;
+  j["euler_characteristic"] = q.euler_characteristic;
+  j["boundary_loops"] = q.boundary_loops;
+  j["manifold"] = q.manifold;
+  j["consistently_oriented"] = q.consistently_oriented;
+  j["edge_length_min"] = number(q.edge_length_min);
+  j["edge_length_mean"] = number(q.edge_length_mean);
+  j["edge_length_max"] = number(q.edge_length_max);
+  j["boundary_alignment_mean"] = number(q.boundary_alignment_mean);
+  j["boundary_alignment_max"] = number(q.boundary_alignment_max);
+  j["hausdorff_rel"] = number(q.hausdorff_rel);
+  j["hausdorff_forward_rel"] = number(q.hausdorff_forward_rel);
+  j["hausdorff_backward_rel"] = number(q.hausdorff_backward_rel);
+  return j;
+}
+
+}  // namespace qm::tools

@@ -1,0 +1,86 @@
+// quadmesh quality MESH [--reference TRI] [--json]: the quality report of
+// method.md section 10 for any triangle/quad mesh file.
+#include "io/read_polygon_mesh.h"
+#include "io/read_surface.h"
+#include "libquadmesh/quality/quad_quality.h"
+#include "tools/common/exit_codes.h"
+#include "tools/common/progress.h"
+#include "tools/common/quality_json.h"
+#include "tools/quadmesh/commands.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace qm::tools {
+
+namespace {
+
+/// "1.000" or "n/a" for a statistic that is not defined (NaN).
+std::string value(double x, const char* spec = "{:.3f}") {
+  return std::isnan(x) ? std::string("n/a") : fmt::format(fmt::runtime(spec), x);
+}
+
+/// "3: 4, 4: 120, 5: 4" (valence: vertices).
+std::string histogram(const std::map<int, std::size_t>& counts) {
+  if (counts.empty()) return "none";
+  std::vector<std::string> items;
+  for (const auto& [valence, count] : counts)
+    items.push_back(fmt::format("{}: {}", valence, count));
+  return fmt::format("{}", fmt::join(items, ", "));
+}
+
+std::string quality_text(const QuadQuality& q, bool with_reference) {
+  std::string out;
+  auto line = [&out](const char* key, const std::string& text) {
+    out += fmt::format("{:<20}{}\n", key, text);
+  };
+  line("faces", fmt::format("{} quads, {} triangles, {} other; {} vertices", q.quads, q.triangles,
+                            q.other_faces, q.vertices));
+  line("inverted quads", fmt::format("{}", q.inverted));
+  line("scaled Jacobian", fmt::format("min {}, mean {}, p1 {}", value(q.min_scaled_jacobian),
+                                      value(q.mean_scaled_jacobian), value(q.p01_scaled_jacobian)));
+  line("angle deviation", fmt::format("mean {} deg, p99 {} deg", value(q.angle_dev_mean, "{:.2f}"),
+                                      value(q.angle_dev_p99, "{:.2f}")));
+  line("irregular vertices",
+       fmt::format("{} interior, {} boundary", q.irregular_interior, q.irregular_boundary));
+  line("valence interior", histogram(q.valence_interior));
+  line("valence boundary", histogram(q.valence_boundary));
+  line("topology", fmt::format("chi {}, {} boundary loops{}{}", q.euler_characteristic,
+                               q.boundary_loops, q.manifold ? "" : ", NOT manifold",
+                               q.consistently_oriented ? "" : ", NOT consistently oriented"));
+  if (with_reference)
+    line("Hausdorff distance",
+         fmt::format("{} of the diagonal (mesh to reference {}, reference to mesh {})",
+                     value(q.hausdorff_rel, "{:.3g}"), value(q.hausdorff_forward_rel, "{:.3g}"),
+                     value(q.hausdorff_backward_rel, "{:.3g}")));
+  return out;
+}
+
+}  // namespace
+
+int run_quality(const QualityOptions& options, const CommonOptions& common) {
+  const Progress progress(common.quiet || options.json);
+  progress.stage(fmt::format("reading {}", options.input));
+  const PolygonMesh mesh = io::read_polygon_mesh(options.input);
+  io::SurfaceFile reference;
+  const bool with_reference = !options.reference.empty();
+  if (with_reference) {
+    progress.stage(fmt::format("reading the reference {}", options.reference));
+    io::ReadOptions read;
+    read.cad_mesh_size = common.cad_mesh_size;
+    reference = io::read_surface(options.reference, read);
+  }
+  progress.stage("measuring quality");
+  const QuadQuality q = quad_quality(mesh, with_reference ? &reference.soup : nullptr);
+  if (options.json)
+    fmt::print("{}\n", quality_json(q).dump(2));
+  else
+    fmt::print("{}", quality_text(q, with_reference));
+  return exit_ok;
+}
+
+}  // namespace qm::tools

@@ -1,0 +1,183 @@
+#include "tools/quadmesh/quad_output.h"
+
+#include "io/atomic_file.h"
+#include "tools/common/quality_json.h"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <map>
+#include <set>
+
+namespace qm::tools {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+/// CAD curves that a quad point can lie on: those of the input boundary edges
+/// through it.
+std::set<int> curves_at(const SurfaceLocation& loc, const std::map<std::pair<int, int>, int>& curve_of_edge,
+                        const std::multimap<int, int>& curves_of_vertex) {
+  std::set<int> out;
+  if (loc.kind == SurfaceLocation::Kind::edge) {
+    const auto it = curve_of_edge.find({loc.a, loc.b});
+    if (it != curve_of_edge.end()) out.insert(it->second);
+  } else if (loc.kind == SurfaceLocation::Kind::vertex) {
+    const auto [lo, hi] = curves_of_vertex.equal_range(loc.a);
+    for (auto it = lo; it != hi; ++it) out.insert(it->second);
+  }
+  return out;
+}
+
+Json complex_json(Complex z) { return Json::array({z.real(), z.imag()}); }
+
+}  // namespace
+
+io::OutputMesh output_mesh(const QuadMeshResult& result) {
+  const LatticeQuads& q = result.quads;
+  io::OutputMesh out;
+  out.points = q.points;
+  for (const auto& quad : q.quads) out.faces.push_back({quad[0], quad[1], quad[2], quad[3]});
+  // boundary edges: used by one quad, in the quad's direction
+  std::map<std::pair<int, int>, int> uses;
+  for (const auto& quad : q.quads)
+    for (int i = 0; i < 4; ++i) ++uses[{quad[static_cast<std::size_t>(i)], quad[static_cast<std::size_t>((i + 1) % 4)]}];
+  const CadCurves& cad = result.surface.cad;
+  std::map<std::pair<int, int>, int> curve_of_edge;
+  std::multimap<int, int> curves_of_vertex;
+  for (const CurveEdge& e : cad.edges) {
+    curve_of_edge[{std::min(e.a, e.b), std::max(e.a, e.b)}] = e.curve;
+    curves_of_vertex.insert({e.a, e.curve});
+    curves_of_vertex.insert({e.b, e.curve});
+  }
+  std::map<int, std::string> group_of_curve;
+  for (const PhysicalCurveGroup& g : cad.groups)
+    for (int c : g.curves) group_of_curve[c] = g.name.empty() ? fmt::format("curve_group_{}", g.tag) : g.name;
+  std::map<std::string, io::LineGroup> groups;
+  std::vector<std::string> order;
+  for (const auto& quad : q.quads)
+    for (int i = 0; i < 4; ++i) {
+      const int a = quad[static_cast<std::size_t>(i)], b = quad[static_cast<std::size_t>((i + 1) % 4)];
+      if (uses.count({b, a})) continue;
+      int loop = result.boundary_loop_of_point[static_cast<std::size_t>(a)];
+      if (loop < 0) loop = result.boundary_loop_of_point[static_cast<std::size_t>(b)];
+      std::string name = fmt::format("boundary_{}", std::max(loop, 0));
+      if (!group_of_curve.empty()) {
+        const std::set<int> ca = curves_at(q.locations[static_cast<std::size_t>(a)], curve_of_edge, curves_of_vertex);
+        const std::set<int> cb = curves_at(q.locations[static_cast<std::size_t>(b)], curve_of_edge, curves_of_vertex);
+        for (int c : ca)
+          if (cb.count(c) && group_of_curve.count(c)) {
+            name = group_of_curve[c];
+            break;
+          }
+      }
+      if (!groups.count(name)) {
+        groups[name].name = name;
+        order.push_back(name);
+      }
+      groups[name].edges.push_back({a, b});
+    }
+  std::sort(order.begin(), order.end());
+  for (const std::string& name : order) out.line_groups.push_back(std::move(groups[name]));
+  io::PointGroup singular{"singular_vertices", {}};
+  std::vector<int> valence(q.points.size(), 0);
+  for (const auto& quad : q.quads)
+    for (int v : quad) ++valence[static_cast<std::size_t>(v)];
+  for (std::size_t v = 0; v < q.points.size(); ++v)
+    if (result.boundary_loop_of_point[v] < 0 && valence[v] != 4) singular.points.push_back(static_cast<int>(v));
+  if (!singular.points.empty()) out.point_groups.push_back(std::move(singular));
+  return out;
+}
+
+MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, const MeshOptions& options,
+                      double seconds) {
+  MeshSummary s;
+  s.input = options.input;
+  PolygonMesh mesh;
+  mesh.points = result.quads.points;
+  for (const auto& quad : result.quads.quads) mesh.faces.push_back({quad[0], quad[1], quad[2], quad[3]});
+  s.quality = quad_quality(mesh, &in.surface.soup);
+  for (const ZeroVertex& z : result.zero_vertices)
+    if (!z.corner) (z.on_boundary ? s.expected_irregular_boundary : s.expected_irregular_interior)++;
+  s.input_euler_characteristic = static_cast<int>(in.surface.report.euler_characteristic);
+  s.input_boundary_loops = in.surface.report.boundary_loop_count();
+  s.seconds = seconds;
+
+  Json j;
+  j["input"] = options.input;
+  j["output"] = options.output;
+  j["quality"] = quality_json(s.quality);
+  j["expected"] = {{"irregular_interior", s.expected_irregular_interior},
+                   {"boundary_zeros", s.expected_irregular_boundary},
+                   {"euler_characteristic", s.input_euler_characteristic},
+                   {"boundary_loops", s.input_boundary_loops},
+                   {"quads", result.expected_quads}};
+  j["form"] = {{"coefficients", std::vector<double>(result.coefficients.data(),
+                                                     result.coefficients.data() + result.coefficients.size())},
+               {"rotate", options.rotate},
+               {"uniformity_ratio", result.uniformity},
+               {"scale", result.scale},
+               {"size_requested", result.size_requested},
+               {"size", result.size},
+               {"doubled_genus", result.doubled_genus},
+               {"hodge_star_squared", result.residuals.hodge_star_squared}};
+  Json zeros = Json::array();
+  for (const ZeroVertex& z : result.zero_vertices) {
+    if (z.corner) continue;
+    const Vec3& p = result.surface.points[static_cast<std::size_t>(z.vertex)];
+    zeros.push_back({{"position", {p.x(), p.y(), p.z()}}, {"order", z.order}, {"on_boundary", z.on_boundary}});
+  }
+  j["zeros"] = zeros;
+  j["zero_order_sum_doubled"] = result.zeros.doubled_order_sum;
+  j["flipped_triangles_before"] = result.zeros.flipped_count;
+  const Quantization& qz = result.quantization;
+  Json periods = Json::array();
+  for (const LoopPeriod& p : qz.periods)
+    periods.push_back({{"loop", p.loop}, {"before", complex_json(p.before)}, {"after", complex_json(p.after)}});
+  j["quantization"] = {{"distortion", qz.distortion},
+                       {"periods", periods},
+                       {"lattice_zeros", qz.lattice_zeros},
+                       {"corners", qz.corners},
+                       {"corners_dropped", qz.corners_dropped},
+                       {"flipped_triangles", qz.flipped}};
+  const ExtractionReport& x = result.extraction;
+  j["extraction"] = {{"cells", x.cells},
+                     {"incomplete_cells", x.incomplete_cells},
+                     {"degenerate_cells", x.degenerate_cells},
+                     {"bad_triangles", x.bad_triangles},
+                     {"seam_mismatches", x.seam_mismatches},
+                     {"chords_split", result.chords_split},
+                     {"zero_star_splits", result.star_splits}};
+  Json timings = Json::object();
+  for (const auto& [stage, t] : result.timings) timings[stage] = t;
+  timings["total"] = seconds;
+  j["timings"] = timings;
+  s.report = std::move(j);
+  return s;
+}
+
+void print_summary(const MeshSummary& s) {
+  const QuadQuality& q = s.quality;
+  fmt::print("quads               {} ({} triangles, {} inverted)\n", q.quads, q.triangles, q.inverted);
+  fmt::print("irregular vertices  {} interior (zeros predict {}), {} on the boundary ({} boundary zeros)\n",
+             q.irregular_interior, s.expected_irregular_interior, q.irregular_boundary,
+             s.expected_irregular_boundary);
+  fmt::print("scaled Jacobian     min {:.3f}, mean {:.3f}\n", q.min_scaled_jacobian, q.mean_scaled_jacobian);
+  fmt::print("angle deviation     mean {:.2f} deg, p99 {:.2f} deg\n", q.angle_dev_mean, q.angle_dev_p99);
+  fmt::print("topology            chi {} (input {}), {} boundary loops (input {})\n", q.euler_characteristic,
+             s.input_euler_characteristic, q.boundary_loops, s.input_boundary_loops);
+  fmt::print("Hausdorff distance  {:.3g} of the diagonal\n", q.hausdorff_rel);
+  fmt::print("quantization        distortion {:.3g}\n", s.report["quantization"]["distortion"].get<double>());
+  fmt::print("time                {:.2f} s\n", s.seconds);
+}
+
+void write_report(const std::string& path, const MeshSummary& summary) {
+  io::write_atomically(path, [&](const std::string& temporary) {
+    std::ofstream out(temporary);
+    out << summary.report.dump(2) << '\n';
+    if (!out) throw Error(ErrorCode::bad_input, fmt::format("{}: cannot write the report", path));
+  });
+}
+
+}  // namespace qm::tools
