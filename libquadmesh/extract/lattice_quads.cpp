@@ -159,7 +159,7 @@ LatticeQuads extract_lattice_quads(const TriangleSoup& soup, const SurfaceAdjace
   std::vector<char> good(nF, 0);
   for (std::size_t f = 0; f < nF; ++f) {
     good[f] = orient(q[f][0], q[f][1], q[f][2]) > 0;
-    if (!good[f]) ++report.bad_triangles;
+    if (!good[f] && report.bad_triangles++ == 0) report.first_problem_triangle = static_cast<int>(f);
   }
 
   // 2. pieces
@@ -282,6 +282,7 @@ LatticeQuads extract_lattice_quads(const TriangleSoup& soup, const SurfaceAdjace
     for (int p : *list) area += piece_area[static_cast<std::size_t>(p)];
     if (std::abs(area - 1.0) > 1e-6) {
       ++report.incomplete_cells;
+      if (report.first_problem_triangle < 0) report.first_problem_triangle = pieces[static_cast<std::size_t>(first)].face;
       continue;
     }
     static constexpr int offsets[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
@@ -301,6 +302,7 @@ LatticeQuads extract_lattice_quads(const TriangleSoup& soup, const SurfaceAdjace
         if (quad[static_cast<std::size_t>(i)] == quad[static_cast<std::size_t>(j)]) ok = false;
     if (!ok) {
       ++report.degenerate_cells;
+      if (report.first_problem_triangle < 0) report.first_problem_triangle = pieces[static_cast<std::size_t>(first)].face;
       continue;
     }
     out.quads.push_back(quad);

@@ -43,6 +43,7 @@ struct ExtractionReport {
   std::size_t degenerate_cells = 0;    ///< two corners at one point, or a corner not found: dropped
   std::size_t bad_triangles = 0;       ///< image area <= 0: not used
   std::size_t seam_mismatches = 0;     ///< corners whose charts differ by a non-integer translation
+  int first_problem_triangle = -1;     ///< a triangle at the first problem met (bad or in a dropped cell)
 };
 
 /// fixed-point units per lattice unit

@@ -236,6 +236,45 @@ double round_nonzero(double x) {
   return r;
 }
 
+std::vector<double> round_levels(const std::vector<double>& levels) {
+  const std::size_t n = levels.size();
+  if (n == 0) return {};
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return levels[a] < levels[b]; });
+  // dynamic programming over a few integer candidates per level (in sorted
+  // order): least squared rounding with every level >= the one before, and > when
+  // they differ by more than 1/4
+  constexpr int span = 3;
+  std::vector<std::vector<double>> cost(n, std::vector<double>(2 * span + 1, 1e300));
+  std::vector<std::vector<int>> from(n, std::vector<int>(2 * span + 1, -1));
+  auto candidate = [&](std::size_t i, int c) { return std::round(levels[order[i]]) + (c - span); };
+  for (int c = 0; c <= 2 * span; ++c) cost[0][static_cast<std::size_t>(c)] = std::pow(candidate(0, c) - levels[order[0]], 2);
+  for (std::size_t i = 1; i < n; ++i) {
+    const bool apart = levels[order[i]] - levels[order[i - 1]] > 0.25;
+    for (int c = 0; c <= 2 * span; ++c)
+      for (int p = 0; p <= 2 * span; ++p) {
+        const double here = candidate(i, c), there = candidate(i - 1, p);
+        if (here < there || (apart && here == there)) continue;
+        const double total = cost[i - 1][static_cast<std::size_t>(p)] + std::pow(here - levels[order[i]], 2);
+        if (total < cost[i][static_cast<std::size_t>(c)]) {
+          cost[i][static_cast<std::size_t>(c)] = total;
+          from[i][static_cast<std::size_t>(c)] = p;
+        }
+      }
+  }
+  std::vector<double> out(n, 0.0);
+  int c = static_cast<int>(std::min_element(cost[n - 1].begin(), cost[n - 1].end()) - cost[n - 1].begin());
+  for (std::size_t i = n; i-- > 0;) {
+    out[order[i]] = candidate(i, c);
+    if (i > 0) c = from[i][static_cast<std::size_t>(c)];
+  }
+  // an integer shift so that levels[0] keeps its own rounding (boundary 0 at 0)
+  const double offset = std::round(levels[0]) - out[0];
+  for (double& x : out) x += offset;
+  return out;
+}
+
 Complex edge_value(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const FaceMap& form,
                    int a, int b) {
   (void)soup;
@@ -371,13 +410,16 @@ Quantization quantize(const TriangleSoup& soup, const SurfaceAdjacency& adjacenc
   std::vector<int> loop_of(nV, -1);
   for (std::size_t k = 0; k < loops.boundaries.size(); ++k)
     for (int v : loops.boundaries[k]) loop_of[static_cast<std::size_t>(v)] = static_cast<int>(k);
+  std::vector<double> level(loops.boundaries.size(), 0.0);
+  for (std::size_t k = 1; k < loops.boundaries.size(); ++k)
+    level[k] = path_integral(soup, adjacency, xi, loops.bridges[k - 1], false).imag();
+  const std::vector<double> rounded = round_levels(level);
   std::vector<double> shift(loops.boundaries.size(), 0.0);
   for (std::size_t k = 1; k < loops.boundaries.size(); ++k) {
-    const double level = path_integral(soup, adjacency, xi, loops.bridges[k - 1], false).imag();
-    shift[k] = round_nonzero(level) - level;
+    shift[k] = rounded[k] - level[k];
     q.periods.push_back({fmt::format("bridge_{}", k),
                          Complex(0, path_integral(soup, adjacency, target, loops.bridges[k - 1], false).imag()),
-                         Complex(0, round_nonzero(level))});
+                         Complex(0, rounded[k])});
   }
   for (std::size_t v = 0; v < nV; ++v)
     if (loop_of[v] >= 0) fixed_v[static_cast<int>(v)] = shift[static_cast<std::size_t>(loop_of[v])];

@@ -71,6 +71,12 @@ Quantization quantize(const TriangleSoup& soup, const SurfaceAdjacency& adjacenc
 /// that was not 0 must not collapse).
 double round_nonzero(double x);
 
+/// Integer boundary levels (rule 2 with rule 4): the least squared rounding in
+/// which levels more than 1/4 apart stay distinct and in the same order (a strip
+/// between two boundaries must not collapse), shifted by an integer so that
+/// levels[0] keeps its own rounding.
+std::vector<double> round_levels(const std::vector<double>& levels);
+
 /// The value of a closed form along the directed edge a->b (a FaceMap difference).
 Complex edge_value(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const FaceMap& form,
                    int a, int b);

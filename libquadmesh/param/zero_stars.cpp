@@ -7,7 +7,6 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <algorithm>
-#include <cstdlib>
 #include <functional>
 #include <queue>
 #include <set>
@@ -104,7 +103,7 @@ std::vector<ZeroVertex> merge_close_zeros(const TriangleSoup& soup, const FaceMa
   for (ZeroVertex& z : zeros) {
     if (z.on_boundary) continue;
     int nearest = -1;
-    double best = (std::getenv("QMSNAP") ? std::atof(std::getenv("QMSNAP")) : 0.75) * radius;
+    double best = 0.75 * radius;
     for (const auto& [v, d] : image_ball(soup, adjacency, map, z.vertex, best))
       if (adjacency.boundary_vertex[static_cast<std::size_t>(v)] && d <= best) {
         best = d;

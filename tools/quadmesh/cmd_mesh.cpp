@@ -19,6 +19,28 @@ bool report_path_usable(const std::string& path) {
   fmt::print(stderr, "quadmesh: error: {}: the folder {} does not exist\n", path, folder.string());
   return false;
 }
+
+/// A quad mesh whose topology differs from the input's is broken output: refuse
+/// to write it (exit 1), naming where the parameterization failed.
+void require_conforming(const MeshSummary& s, const QuadMeshResult& r) {
+  const QuadQuality& q = s.quality;
+  if (q.euler_characteristic == s.input_euler_characteristic && q.boundary_loops == s.input_boundary_loops &&
+      q.manifold && q.consistently_oriented && q.triangles == 0 && q.other_faces == 0)
+    return;
+  std::string where;
+  if (r.extraction.first_problem_triangle >= 0) {
+    const Triangle& t = r.surface.triangles[static_cast<std::size_t>(r.extraction.first_problem_triangle)];
+    const Vec3 c = (r.surface.points[static_cast<std::size_t>(t[0])] + r.surface.points[static_cast<std::size_t>(t[1])] +
+                    r.surface.points[static_cast<std::size_t>(t[2])]) / 3.0;
+    where = fmt::format(" first near ({:.6g}, {:.6g}, {:.6g})", c.x(), c.y(), c.z());
+  }
+  throw Error(ErrorCode::solver,
+              fmt::format("the quad mesh would not be conforming (chi {} and {} boundary loops, the input has {} "
+                          "and {}): {} folded triangles and {} incomplete cells are left{}; no output was written; "
+                          "try another --size or --form",
+                          q.euler_characteristic, q.boundary_loops, s.input_euler_characteristic,
+                          s.input_boundary_loops, r.extraction.bad_triangles, r.extraction.incomplete_cells, where));
+}
 }  // namespace
 
 int run_mesh(const MeshOptions& options, const CommonOptions& common) {
@@ -46,6 +68,7 @@ int run_mesh(const MeshOptions& options, const CommonOptions& common) {
 
   progress.stage("measuring quality");
   const MeshSummary summary = summarize(in, result, options, progress.elapsed());
+  require_conforming(summary, result);
   progress.stage(fmt::format("writing {}", options.output));
   io::WriteOptions write;
   write.msh_version = options.msh_version;
