@@ -167,7 +167,7 @@ QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, con
   for (const MapZero& z : r.zeros.zeros)
     if (z.order > 0 && z.representative >= 0) r.zero_vertices.push_back({z.representative, z.order, z.on_boundary});
   r.zero_vertices = merge_close_zeros(soup, target, r.zero_vertices, 1.0);
-  for (const ZeroVertex& c : boundary_corners(soup, options.corner_angle_deg, 0.5 * r.size, r.zero_vertices))
+  for (const ZeroVertex& c : boundary_corners(soup, options.corner_angle_deg, r.size, r.zero_vertices))
     r.zero_vertices.push_back(c);
   {
     std::vector<FaceMap*> maps{&target};

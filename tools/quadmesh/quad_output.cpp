@@ -140,7 +140,10 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
                        {"lattice_zeros", qz.lattice_zeros},
                        {"corners", qz.corners},
                        {"corners_dropped", qz.corners_dropped},
-                       {"flipped_triangles", qz.flipped}};
+                       {"flipped_triangles", qz.flipped},
+                       {"untangled", {{"flipped_before", result.untangle.flipped_before},
+                                      {"flipped_after", result.untangle.flipped_after},
+                                      {"moved_vertices", result.untangle.moved_vertices}}}};
   const ExtractionReport& x = result.extraction;
   j["extraction"] = {{"cells", x.cells},
                      {"incomplete_cells", x.incomplete_cells},
