@@ -1,12 +1,11 @@
 #include "io/read_polygon_mesh.h"
 
+#include "io/cgal_polygon_soup.h"
 #include "io/file_format.h"
 #include "io/gmsh_session.h"
 #include "io/text_diagnostics.h"
 #include "libquadmesh/core/error.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/polygon_soup_io.h>
 #include <fmt/format.h>
 #include <gmsh.h>
 
@@ -21,25 +20,9 @@ namespace qm::io {
 
 namespace {
 
-using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
 
 [[noreturn]] void fail(const std::string& message) {
   throw Error(ErrorCode::bad_input, message);
-}
-
-std::optional<std::string> diagnose(const std::string& path, Format format) {
-  switch (format) {
-    case Format::obj:
-      return diagnose_obj(path);
-    case Format::off:
-      return diagnose_off(path);
-    case Format::ply:
-      return diagnose_ply(path);
-    case Format::stl:
-      return diagnose_stl(path);
-    default:
-      return std::nullopt;
-  }
 }
 
 /// Keeps only the points that a face uses (in their order) and renumbers the faces.
@@ -61,25 +44,13 @@ void drop_unreferenced(PolygonMesh& mesh) {
 }
 
 PolygonMesh read_with_cgal(const std::string& path, Format format) {
-  std::vector<Point> points;
-  std::vector<std::vector<std::size_t>> polygons;
-  bool ok = false;
-  {
-    // CGAL's readers complain on std::cerr; the library never prints.
-    std::ostringstream swallowed;
-    std::streambuf* previous = std::cerr.rdbuf(swallowed.rdbuf());
-    try {
-      ok = CGAL::IO::read_polygon_soup(path, points, polygons);
-    } catch (const std::exception&) {
-      ok = false;
-    }
-    std::cerr.rdbuf(previous);
-  }
-  if (!ok) fail(fmt::format("{}: could not parse the file", path));
+  PolygonSoup read;
+  if (!read_cgal_polygon_soup(path, read)) fail(fmt::format("{}: could not parse the file", path));
+  const auto& points = read.points;
+  const auto& polygons = read.polygons;
   const std::size_t base = format == Format::obj ? 1 : 0;  // OBJ counts from 1
   PolygonMesh mesh;
-  for (const Point& p : points)
-    mesh.points.emplace_back(p.x(), p.y(), p.z());
+  mesh.points = points;
   for (std::size_t f = 0; f < polygons.size(); ++f) {
     if (polygons[f].size() < 3)
       fail(fmt::format("{}: face {} has {} vertices", path, f + base, polygons[f].size()));
@@ -144,17 +115,7 @@ PolygonMesh read_with_gmsh(const std::string& path) {
 }  // namespace
 
 PolygonMesh read_polygon_mesh(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!fs::exists(path, ec)) fail(fmt::format("{}: no such file", path));
-  if (fs::is_directory(path, ec)) fail(fmt::format("{}: is a directory, not a mesh file", path));
-  if (fs::file_size(path, ec) == 0) fail(fmt::format("{}: empty file", path));
-  if (!std::ifstream(path).good()) fail(fmt::format("{}: cannot open the file for reading", path));
-  const Format format = format_of(path);
-  if (!is_readable(format))
-    fail(fmt::format("{}: unknown input format '{}' (readable: {})", path,
-                     fs::path(path).extension().string(), readable_extensions()));
-  if (auto problem = diagnose(path, format)) fail(*problem);
+  const Format format = check_input_file(path);
 
   PolygonMesh mesh = (format == Format::obj || format == Format::off || format == Format::ply)
                          ? read_with_cgal(path, format)

@@ -1,11 +1,11 @@
 #include "io/read_surface.h"
 
+#include "io/cgal_polygon_soup.h"
 #include "io/gmsh_session.h"
 #include "io/text_diagnostics.h"
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/core/mesh.h"
 
-#include <CGAL/IO/polygon_soup_io.h>
 #include <fmt/format.h>
 #include <gmsh.h>
 
@@ -31,45 +31,16 @@ std::size_t add_polygon(TriangleSoup& soup, const std::vector<int>& corners, std
   return corners.size() > 3 ? 1 : 0;
 }
 
-bool ascii_msh(const std::string& path) {
-  std::ifstream in(path);
-  std::string magic, version, file_type;
-  return (in >> magic >> version >> file_type) && magic == "$MeshFormat" && file_type == "0";
-}
-
-std::optional<std::string> diagnose(const std::string& path, Format format) {
-  switch (format) {
-    case Format::obj: return diagnose_obj(path);
-    case Format::off: return diagnose_off(path);
-    case Format::ply: return diagnose_ply(path);
-    case Format::stl: return diagnose_stl(path);
-    case Format::msh: return ascii_msh(path) ? diagnose_msh(path) : std::nullopt;
-    default: return std::nullopt;
-  }
-}
-
 SurfaceFile read_with_cgal(const std::string& path, Format format) {
-  std::vector<Point3> points;
-  std::vector<std::vector<std::size_t>> polygons;
-  bool ok = false;
-  {
-    // CGAL's readers write their complaints to std::cerr; the library never prints,
-    // so they are silenced and the error below speaks instead.
-    std::ostringstream swallowed;
-    std::streambuf* previous = std::cerr.rdbuf(swallowed.rdbuf());
-    try {
-      ok = CGAL::IO::read_polygon_soup(path, points, polygons);
-    } catch (const std::exception&) {
-      ok = false;
-    }
-    std::cerr.rdbuf(previous);
-  }
-  if (!ok) fail(fmt::format("{}: could not parse the file", path));
+  PolygonSoup read;
+  if (!read_cgal_polygon_soup(path, read)) fail(fmt::format("{}: could not parse the file", path));
+  const auto& points = read.points;
+  const auto& polygons = read.polygons;
   SurfaceFile file;
   file.format = format;
   const std::int64_t base = format == Format::obj ? 1 : 0;  // OBJ counts from 1
   for (std::size_t i = 0; i < points.size(); ++i) {
-    file.soup.points.emplace_back(points[i].x(), points[i].y(), points[i].z());
+    file.soup.points.push_back(points[i]);
     file.soup.point_labels.push_back(static_cast<std::int64_t>(i) + base);
   }
   std::vector<int> corners;
@@ -215,18 +186,7 @@ SurfaceFile read_with_gmsh(const std::string& path, Format format, const ReadOpt
 }  // namespace
 
 SurfaceFile read_surface(const std::string& path, const ReadOptions& options) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!fs::exists(path, ec)) fail(fmt::format("{}: no such file", path));
-  if (fs::is_directory(path, ec)) fail(fmt::format("{}: is a directory, not a mesh file", path));
-  if (fs::file_size(path, ec) == 0) fail(fmt::format("{}: empty file", path));
-  if (!std::ifstream(path).good()) fail(fmt::format("{}: cannot open the file for reading", path));
-  const Format format = format_of(path);
-  if (!is_readable(format))
-    fail(fmt::format("{}: unknown input format '{}' (readable: {})", path,
-                     fs::path(path).extension().string(), readable_extensions()));
-
-  if (auto problem = diagnose(path, format)) fail(*problem);
+  const Format format = check_input_file(path);
   SurfaceFile file = (format == Format::obj || format == Format::off || format == Format::ply)
                          ? read_with_cgal(path, format)
                          : read_with_gmsh(path, format, options);

@@ -1,4 +1,6 @@
 #include "io/text_diagnostics.h"
+#include <filesystem>
+#include "libquadmesh/core/error.h"
 
 #include <fmt/format.h>
 
@@ -251,6 +253,44 @@ std::optional<std::string> diagnose_msh(const std::string& path) {
     return fmt::format("{}: section '${}' opened at line {} is not closed (truncated?)", path,
                        open_section, open_line);
   return std::nullopt;
+}
+
+namespace {
+
+bool ascii_msh(const std::string& path) {
+  std::ifstream in(path);
+  std::string magic, version, file_type;
+  return (in >> magic >> version >> file_type) && magic == "$MeshFormat" && file_type == "0";
+}
+
+std::optional<std::string> diagnose(const std::string& path, Format format) {
+  switch (format) {
+    case Format::obj: return diagnose_obj(path);
+    case Format::off: return diagnose_off(path);
+    case Format::ply: return diagnose_ply(path);
+    case Format::stl: return diagnose_stl(path);
+    case Format::msh: return ascii_msh(path) ? diagnose_msh(path) : std::nullopt;
+    default: return std::nullopt;
+  }
+}
+
+[[noreturn]] void refuse(const std::string& message) { throw Error(ErrorCode::bad_input, message); }
+
+}  // namespace
+
+Format check_input_file(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(path, ec)) refuse(fmt::format("{}: no such file", path));
+  if (fs::is_directory(path, ec)) refuse(fmt::format("{}: is a directory, not a mesh file", path));
+  if (fs::file_size(path, ec) == 0) refuse(fmt::format("{}: empty file", path));
+  if (!std::ifstream(path).good()) refuse(fmt::format("{}: cannot open the file for reading", path));
+  const Format format = format_of(path);
+  if (!is_readable(format))
+    refuse(fmt::format("{}: unknown input format '{}' (readable: {})", path,
+                       fs::path(path).extension().string(), readable_extensions()));
+  if (auto problem = diagnose(path, format)) refuse(*problem);
+  return format;
 }
 
 }  // namespace qm::io

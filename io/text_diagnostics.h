@@ -6,6 +6,8 @@
 // else.
 #pragma once
 
+#include "io/file_format.h"
+
 #include <optional>
 #include <string>
 
@@ -25,5 +27,11 @@ std::optional<std::string> diagnose_ply(const std::string& path);
 std::optional<std::string> diagnose_stl(const std::string& path);
 /// Gmsh MSH sections: a missing $End... marker means a truncated file.
 std::optional<std::string> diagnose_msh(const std::string& path);
+
+/// The checks every reader makes before parsing: the file exists, is a regular,
+/// non-empty, readable file with a readable extension, and (text formats) its
+/// first problem if any. Returns its format; throws qm::Error(bad_input) with a
+/// one-line message that starts with the path.
+Format check_input_file(const std::string& path);
 
 }  // namespace qm::io
