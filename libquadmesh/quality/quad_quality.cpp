@@ -190,6 +190,40 @@ double quad_warp_deg(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
   return std::max(along_ac, along_bd);
 }
 
+QuadShapeSamples quad_shape_samples(const PolygonMesh& mesh) {
+  QuadShapeSamples s;
+  const auto point = [&](int v) -> const Vec3& { return mesh.points[static_cast<std::size_t>(v)]; };
+  const std::vector<Vec3> normals = vertex_normals(mesh);
+  for (const std::vector<int>& face : mesh.faces) {
+    if (face.size() != 4) continue;
+    const Vec3& p0 = point(face[0]);
+    const Vec3& p1 = point(face[1]);
+    const Vec3& p2 = point(face[2]);
+    const Vec3& p3 = point(face[3]);
+    const Vec3 own = (p2 - p0).cross(p3 - p1);
+    const Vec3 own_normal = own.norm() > 0 ? Vec3(own.normalized()) : Vec3::Zero();
+    double jacobian = std::numeric_limits<double>::infinity();
+    double shortest = std::numeric_limits<double>::infinity(), longest = 0;
+    for (int c = 0; c < 4; ++c) {
+      const Vec3& prev = point(face[static_cast<std::size_t>((c + 3) % 4)]);
+      const Vec3& p = point(face[static_cast<std::size_t>(c)]);
+      const Vec3& next = point(face[static_cast<std::size_t>((c + 1) % 4)]);
+      const Vec3& vn = normals[static_cast<std::size_t>(face[static_cast<std::size_t>(c)])];
+      const Vec3& n = vn.squaredNorm() > 0 ? vn : own_normal;
+      jacobian = std::min(jacobian, corner_scaled_jacobian(prev, p, next, n));
+      s.angle_deviation_deg.push_back(std::abs(corner_angle_deg(prev, p, next) - 90.0));
+      const double length = (next - p).norm();
+      shortest = std::min(shortest, length);
+      longest = std::max(longest, length);
+    }
+    s.scaled_jacobian.push_back(jacobian);
+    s.aspect_ratio.push_back(shortest > 0 ? longest / shortest
+                                          : std::numeric_limits<double>::infinity());
+    s.warp_deg.push_back(quad_warp_deg(p0, p1, p2, p3));
+  }
+  return s;
+}
+
 QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference) {
   QuadQuality q;
   const std::size_t point_count = mesh.points.size();
@@ -211,35 +245,13 @@ QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference)
   const auto point = [&](int v) -> const Vec3& { return mesh.points[static_cast<std::size_t>(v)]; };
 
   // ---- per quad: scaled Jacobian, corner angles, aspect ratio, warp
-  const std::vector<Vec3> normals = vertex_normals(mesh);
-  std::vector<double> jacobians, angle_devs, aspects, warps;
-  for (const std::vector<int>& face : mesh.faces) {
-    if (face.size() != 4) continue;
-    const Vec3& p0 = point(face[0]);
-    const Vec3& p1 = point(face[1]);
-    const Vec3& p2 = point(face[2]);
-    const Vec3& p3 = point(face[3]);
-    const Vec3 own = (p2 - p0).cross(p3 - p1);
-    const Vec3 own_normal = own.norm() > 0 ? Vec3(own.normalized()) : Vec3::Zero();
-    double jacobian = std::numeric_limits<double>::infinity();
-    double shortest = std::numeric_limits<double>::infinity(), longest = 0;
-    for (int c = 0; c < 4; ++c) {
-      const Vec3& prev = point(face[static_cast<std::size_t>((c + 3) % 4)]);
-      const Vec3& p = point(face[static_cast<std::size_t>(c)]);
-      const Vec3& next = point(face[static_cast<std::size_t>((c + 1) % 4)]);
-      const Vec3& vn = normals[static_cast<std::size_t>(face[static_cast<std::size_t>(c)])];
-      const Vec3& n = vn.squaredNorm() > 0 ? vn : own_normal;
-      jacobian = std::min(jacobian, corner_scaled_jacobian(prev, p, next, n));
-      angle_devs.push_back(std::abs(corner_angle_deg(prev, p, next) - 90.0));
-      const double length = (next - p).norm();
-      shortest = std::min(shortest, length);
-      longest = std::max(longest, length);
-    }
-    jacobians.push_back(jacobian);
+  const QuadShapeSamples samples = quad_shape_samples(mesh);
+  const std::vector<double>& jacobians = samples.scaled_jacobian;
+  const std::vector<double>& angle_devs = samples.angle_deviation_deg;
+  const std::vector<double>& aspects = samples.aspect_ratio;
+  const std::vector<double>& warps = samples.warp_deg;
+  for (double jacobian : jacobians)
     if (jacobian <= 0) ++q.inverted;
-    aspects.push_back(shortest > 0 ? longest / shortest : std::numeric_limits<double>::infinity());
-    warps.push_back(quad_warp_deg(p0, p1, p2, p3));
-  }
   q.min_scaled_jacobian = min_of(jacobians);
   q.mean_scaled_jacobian = mean(jacobians);
   q.p01_scaled_jacobian = percentile(jacobians, 0.01);

@@ -79,6 +79,21 @@ struct QuadQuality {
   double hausdorff_backward_rel = 0;  ///< farthest reference sample from the mesh / diagonal
 };
 
+/// The per-element values behind QuadQuality's shape statistics, for histograms:
+/// one entry per quad (in face order) or per quad corner. Triangles and larger
+/// faces are skipped.
+struct QuadShapeSamples {
+  std::vector<double> scaled_jacobian;      ///< per quad: min over its corners (<= 0: inverted)
+  std::vector<double> angle_deviation_deg;  ///< per quad corner: |angle - 90|, degrees
+  std::vector<double> aspect_ratio;         ///< per quad: longest / shortest edge
+  std::vector<double> warp_deg;             ///< per quad: quad_warp_deg
+};
+
+/// The scaled Jacobians (w.r.t. the vertex normals, falling back to the quad's own
+/// normal at points without one), corner angle deviations, aspect ratios and warps
+/// of the quads of `mesh`, exactly as quad_quality measures them.
+QuadShapeSamples quad_shape_samples(const PolygonMesh& mesh);
+
 /// Measures `mesh` (faces CCW seen from the front; degenerate faces are measured,
 /// not rejected) and, when `reference` is not null, its two-sided Hausdorff
 /// distance to that triangulated surface (hausdorff.h; quads split along 0-2).

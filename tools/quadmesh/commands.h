@@ -47,9 +47,19 @@ struct QualityOptions {
   bool json = false;
 };
 
+struct CompareOptions {
+  std::string input;
+  std::string out_dir;         ///< --out: reports and meshes; empty: compare-<input stem>
+  double size = 0.0;           ///< target quad edge length; 0: 1/60 of the bounding-box diagonal
+  double size_relative = 0.0;  ///< --size P%: P/100 of the bounding-box diagonal
+  double timeout = 120.0;      ///< --timeout: seconds each method may run
+  std::string gmsh = "gmsh";   ///< --gmsh: the Gmsh program the baselines run
+};
+
 int run_info(const InfoOptions& info, const CommonOptions& common);
 int run_mesh(const MeshOptions& mesh, const CommonOptions& common);
 int run_forms(const FormsOptions& forms, const CommonOptions& common);
 int run_quality(const QualityOptions& quality, const CommonOptions& common);
+int run_compare(const CompareOptions& compare, const CommonOptions& common);
 
 }  // namespace qm::tools

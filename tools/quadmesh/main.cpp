@@ -14,6 +14,18 @@ namespace {
 
 using namespace qm::tools;
 
+/// CLI11 check of --size: a positive length or a percentage of the diagonal.
+std::string size_or_percent(const std::string& v) {
+  try {
+    std::size_t used = 0;
+    const double x = std::stod(v, &used);
+    const bool percent = used + 1 == v.size() && v.back() == '%';
+    if (x > 0 && (used == v.size() || percent)) return std::string();
+  } catch (const std::exception&) {
+  }
+  return std::string("must be a positive length or a percentage such as 1.5%");
+}
+
 void print_error(const std::string& message) {
   fmt::print(stderr, "quadmesh: error: {}\n", message);
 }
@@ -59,16 +71,7 @@ int run(int argc, char** argv) {
   std::string size_text;
   mesh_cmd->add_option("--size", size_text,
                        "Target quad edge length, or P% of the bounding-box diagonal (default: 1/60 of it)")
-      ->check([](const std::string& v) {
-        try {
-          std::size_t used = 0;
-          const double x = std::stod(v, &used);
-          const bool percent = used + 1 == v.size() && v.back() == '%';
-          if (x > 0 && (used == v.size() || percent)) return std::string();
-        } catch (const std::exception&) {
-        }
-        return std::string("must be a positive length or a percentage such as 1.5%");
-      });
+      ->check(size_or_percent);
   mesh_cmd->add_option("--quads", mesh.quads, "Target number of quads (instead of --size)")
       ->check(CLI::PositiveNumber);
   std::string form_choice = "auto";
@@ -103,8 +106,23 @@ int run(int argc, char** argv) {
                           "Input surface for the two-sided Hausdorff distance");
   quality_cmd->add_flag("--json", quality.json, "Print one JSON object instead of text");
 
+  CompareOptions compare;
+  CLI::App* compare_cmd = app.add_subcommand(
+      "compare", "Ours against Gmsh's quad meshing on the same input and size: reports, pictures, meshes");
+  compare_cmd->add_option("FILE", compare.input, "Input surface")->required();
+  std::string compare_size;
+  compare_cmd->add_option("--size", compare_size,
+                          "Target quad edge length, or P% of the bounding-box diagonal (default: 1/60 of it)")
+      ->check(size_or_percent);
+  compare_cmd->add_option("--out", compare.out_dir,
+                          "Folder for report.md, report.json, the pictures and every mesh "
+                          "(default: compare-<input name>)");
+  compare_cmd->add_option("--timeout", compare.timeout, "Seconds each method may run (default 120)")
+      ->check(CLI::PositiveNumber);
+  compare_cmd->add_option("--gmsh", compare.gmsh, "The Gmsh program of the baselines (default: gmsh)");
+
   // Options given after the subcommand apply too (quadmesh mesh f.obj -o g.msh --quiet).
-  for (CLI::App* sub : {info_cmd, forms_cmd, mesh_cmd, quality_cmd}) {
+  for (CLI::App* sub : {info_cmd, forms_cmd, mesh_cmd, quality_cmd, compare_cmd}) {
     sub->add_flag("-q,--quiet", common.quiet, "No progress lines on stderr");
     sub->add_flag("--largest-component", common.largest_component,
                   "Keep only the largest connected component of the input");
@@ -124,6 +142,15 @@ int run(int argc, char** argv) {
   if (info_cmd->parsed()) return run_info(info, common);
   if (forms_cmd->parsed()) return run_forms(forms, common);
   if (quality_cmd->parsed()) return run_quality(quality, common);
+  if (compare_cmd->parsed()) {
+    if (!compare_size.empty()) {
+      if (compare_size.back() == '%')
+        compare.size_relative = std::stod(compare_size) / 100.0;
+      else
+        compare.size = std::stod(compare_size);
+    }
+    return run_compare(compare, common);
+  }
   if (form_choice != "auto") mesh.form = std::stoi(form_choice) - 1;
   if (!size_text.empty()) {
     if (size_text.back() == '%')

@@ -1,0 +1,351 @@
+#include "tools/compare/comparison_report.h"
+
+#include "tools/compare/histogram_svg.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <limits>
+
+namespace qm::tools {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+Json number(double x) {
+  return std::isfinite(x) ? Json(x) : Json(nullptr);
+}
+
+enum class Better { none, lower, higher, input };
+
+/// One column of the table (and one measure of the verdict).
+struct Metric {
+  const char* header;  ///< table header
+  const char* words;   ///< in a sentence
+  Better better;
+  const char* format;  ///< fmt spec of one value
+  std::function<double(const QuadQuality&)> of;
+  bool in_verdict = true;
+};
+
+const std::vector<Metric>& metrics() {
+  static const std::vector<Metric> all = {
+      {"quads", "quads", Better::none, "{:.0f}",
+       [](const QuadQuality& q) { return static_cast<double>(q.quads); }, false},
+      {"edge mean", "mean edge length", Better::none, "{:.3g}",
+       [](const QuadQuality& q) { return q.edge_length_mean; }, false},
+      {"triangles", "triangles left", Better::lower, "{:.0f}",
+       [](const QuadQuality& q) { return static_cast<double>(q.triangles); }},
+      {"inverted", "inverted quads", Better::lower, "{:.0f}",
+       [](const QuadQuality& q) { return static_cast<double>(q.inverted); }},
+      {"min SJ", "min scaled Jacobian", Better::higher, "{:.3f}",
+       [](const QuadQuality& q) { return q.min_scaled_jacobian; }},
+      {"mean SJ", "mean scaled Jacobian", Better::higher, "{:.3f}",
+       [](const QuadQuality& q) { return q.mean_scaled_jacobian; }},
+      {"angle dev. mean", "mean angle deviation", Better::lower, "{:.2f}",
+       [](const QuadQuality& q) { return q.angle_dev_mean; }},
+      {"angle dev. p99", "99th-percentile angle deviation", Better::lower, "{:.2f}",
+       [](const QuadQuality& q) { return q.angle_dev_p99; }},
+      {"irregular vertices", "irregular interior vertices", Better::lower, "{:.0f}",
+       [](const QuadQuality& q) { return static_cast<double>(q.irregular_interior); }},
+      {"boundary loops", "boundary loops", Better::input, "{:.0f}",
+       [](const QuadQuality& q) { return static_cast<double>(q.boundary_loops); }, false},
+      {"chi", "Euler characteristic", Better::input, "{:.0f}",
+       [](const QuadQuality& q) { return static_cast<double>(q.euler_characteristic); }, false},
+      {"Hausdorff", "Hausdorff distance", Better::lower, "{:.2e}",
+       [](const QuadQuality& q) { return q.hausdorff_rel; }},
+  };
+  return all;
+}
+
+std::string shown(double x, const char* spec) {
+  return std::isfinite(x) ? fmt::format(fmt::runtime(spec), x) : std::string("n/a");
+}
+
+/// The value as the table shows it (so that ties look like ties).
+double rounded(double x, const char* spec) {
+  return std::isfinite(x) ? std::stod(fmt::format(fmt::runtime(spec), x)) : kNaN;
+}
+
+double metric_value(const MethodRun& run, const Metric& m) {
+  return run.quality ? rounded(m.of(*run.quality), m.format) : kNaN;
+}
+
+double input_value(const ComparisonReport& r, const Metric& m) {
+  return std::string(m.header) == "chi" ? r.reference_euler_characteristic
+                                        : r.reference_boundary_loops;
+}
+
+/// The best shown value of `m` over the measured rows (NaN: none, or no order).
+double best_of(const ComparisonReport& r, const Metric& m,
+               const std::function<bool(const MethodRun&)>& among) {
+  double best = kNaN;
+  if (m.better != Better::lower && m.better != Better::higher) return best;
+  for (const MethodRun& run : r.runs) {
+    if (!among(run)) continue;
+    const double v = metric_value(run, m);
+    if (std::isnan(v)) continue;
+    if (std::isnan(best) || (m.better == Better::lower ? v < best : v > best)) best = v;
+  }
+  return best;
+}
+
+bool is_best(const ComparisonReport& r, const MethodRun& run, const Metric& m) {
+  const double v = metric_value(run, m);
+  if (std::isnan(v)) return false;
+  if (m.better == Better::input) return v == input_value(r, m);
+  return v == best_of(r, m, [](const MethodRun& x) { return x.quality.has_value(); });
+}
+
+bool ours(const MethodRun& run) {
+  return run.method.name.rfind("quadmesh", 0) == 0;
+}
+
+std::string seconds_text(double s) {
+  return fmt::format("{:.2f}", s);
+}
+
+}  // namespace
+
+Json report_json(const ComparisonReport& r) {
+  Json j;
+  j["input"] = r.input;
+  j["size"] = r.size;
+  j["diagonal"] = r.diagonal;
+  j["reference"] = {{"points", r.reference_points},
+                    {"triangles", r.reference_triangles},
+                    {"euler_characteristic", r.reference_euler_characteristic},
+                    {"boundary_loops", r.reference_boundary_loops}};
+  j["timeout"] = r.timeout_seconds;
+  j["gmsh_version"] = r.gmsh_version;
+  Json methods = Json::array();
+  for (const MethodRun& run : r.runs) {
+    Json m;
+    m["name"] = run.method.name;
+    m["status"] = status_name(run.status);
+    m["seconds"] = run.seconds;
+    m["detail"] = run.detail;
+    m["description"] = run.method.description;
+    m["mesh"] = run.quality ? Json(run.method.mesh_file) : Json(nullptr);
+    if (run.quality) {
+      const QuadQuality& q = *run.quality;
+      Json quality;
+      quality["quads"] = q.quads;
+      quality["triangles"] = q.triangles;
+      quality["inverted"] = q.inverted;
+      quality["min_scaled_jacobian"] = number(q.min_scaled_jacobian);
+      quality["mean_scaled_jacobian"] = number(q.mean_scaled_jacobian);
+      quality["angle_dev_mean"] = number(q.angle_dev_mean);
+      quality["angle_dev_p99"] = number(q.angle_dev_p99);
+      quality["irregular_vertices"] = q.irregular_interior;
+      quality["boundary_loops"] = q.boundary_loops;
+      quality["euler_characteristic"] = q.euler_characteristic;
+      quality["hausdorff_rel"] = number(q.hausdorff_rel);
+      quality["edge_length_mean"] = number(q.edge_length_mean);
+      m["quality"] = std::move(quality);
+    } else {
+      m["quality"] = nullptr;
+    }
+    methods.push_back(std::move(m));
+  }
+  j["methods"] = std::move(methods);
+  return j;
+}
+
+std::string report_verdict(const ComparisonReport& r) {
+  std::vector<std::string> sentences;
+  std::vector<std::string> failures;
+  for (const MethodRun& run : r.runs)
+    if (!run.quality)
+      failures.push_back(fmt::format("{}, {}: {}", run.method.name, status_name(run.status),
+                                     run.detail.empty() ? "no mesh" : run.detail));
+  if (!failures.empty())
+    sentences.push_back(fmt::format("No mesh from: {}.", fmt::join(failures, "; ")));
+
+  const MethodRun* mine = nullptr;
+  for (const MethodRun& run : r.runs)
+    if (ours(run)) mine = &run;
+  const auto baseline_ok = [](const MethodRun& run) { return !ours(run) && run.quality; };
+  bool any_baseline = false;
+  for (const MethodRun& run : r.runs)
+    any_baseline = any_baseline || baseline_ok(run);
+
+  if (mine == nullptr || !mine->quality) {
+    sentences.push_back(
+        "quadmesh produced no mesh on this input, so the table compares Gmsh's methods only "
+        "(see quadmesh.log for its message).");
+    return fmt::format("{}", fmt::join(sentences, " "));
+  }
+  const QuadQuality& q = *mine->quality;
+  if (any_baseline) {
+    std::vector<std::string> wins, losses;
+    std::size_t measures = 0;
+    for (const Metric& m : metrics()) {
+      if (!m.in_verdict) continue;
+      ++measures;
+      const double v = metric_value(*mine, m);
+      const double best = best_of(r, m, baseline_ok);
+      if (std::isnan(v)) continue;
+      if (std::isnan(best) || (m.better == Better::lower ? v <= best : v >= best)) {
+        wins.push_back(m.words);
+        continue;
+      }
+      for (const MethodRun& run : r.runs)
+        if (baseline_ok(run) && metric_value(run, m) == best) {
+          losses.push_back(fmt::format("{} ({} {} against {})", m.words, run.method.name,
+                                       shown(best, m.format), shown(v, m.format)));
+          break;
+        }
+    }
+    sentences.push_back(
+        fmt::format("quadmesh is best or tied on {} of {} quality measures{}.", wins.size(),
+                    measures, wins.empty() ? "" : fmt::format(" ({})", fmt::join(wins, ", "))));
+    sentences.push_back(
+        losses.empty() ? std::string("No Gmsh method beats it on any of them.")
+                       : fmt::format("A Gmsh method does better on: {}.", fmt::join(losses, "; ")));
+  }
+  const bool same_topology = q.euler_characteristic == r.reference_euler_characteristic &&
+                             q.boundary_loops == r.reference_boundary_loops;
+  sentences.push_back(fmt::format(
+      "Its mesh is {} ({} quads, {} triangles) and {} the input's topology (chi {}, {} boundary "
+      "loops{}).",
+      q.triangles == 0 && q.other_faces == 0 ? "pure quad" : "quad-dominant", q.quads, q.triangles,
+      same_topology ? "keeps" : "does NOT keep", q.euler_characteristic, q.boundary_loops,
+      same_topology ? ""
+                    : fmt::format("; the input has chi {}, {} loops",
+                                  r.reference_euler_characteristic, r.reference_boundary_loops)));
+  std::vector<std::string> changed;
+  for (const MethodRun& run : r.runs)
+    if (baseline_ok(run) &&
+        (run.quality->euler_characteristic != r.reference_euler_characteristic ||
+         run.quality->boundary_loops != r.reference_boundary_loops))
+      changed.push_back(run.method.name);
+  if (!changed.empty())
+    sentences.push_back(fmt::format("Topology changed by: {}.", fmt::join(changed, ", ")));
+  if (any_baseline) {
+    double fastest = std::numeric_limits<double>::infinity(), slowest = 0;
+    for (const MethodRun& run : r.runs)
+      if (baseline_ok(run)) {
+        fastest = std::min(fastest, run.seconds);
+        slowest = std::max(slowest, run.seconds);
+      }
+    sentences.push_back(
+        fmt::format("It took {:.2f} s; the Gmsh methods that finished {:.2f} to {:.2f} s.",
+                    mine->seconds, fastest, slowest));
+  }
+  return fmt::format("{}", fmt::join(sentences, " "));
+}
+
+std::string report_markdown(const ComparisonReport& r) {
+  std::string md =
+      fmt::format("# quadmesh compare: {}\n\n", std::filesystem::path(r.input).filename().string());
+  md += fmt::format(
+      "Input `{}`; target quad size {:.4g} ({:.3g}% of the bounding-box diagonal {:.4g}). "
+      "Every row is measured by the same quality module against the same reference, the input "
+      "triangulation (`input.msh`: {} points, {} triangles, chi {}, {} boundary loops); times are "
+      "wall-clock seconds of each method's own process in this run (limit {:g} s). Gmsh {}.\n\n",
+      r.input, r.size, 100.0 * r.size / r.diagonal, r.diagonal, r.reference_points,
+      r.reference_triangles, r.reference_euler_characteristic, r.reference_boundary_loops,
+      r.timeout_seconds, r.gmsh_version.empty() ? "version unknown" : r.gmsh_version);
+
+  md += "| method | status | seconds |";
+  for (const Metric& m : metrics())
+    md += fmt::format(" {} |", m.header);
+  md += "\n|---|---|---:|";
+  for (std::size_t i = 0; i < metrics().size(); ++i)
+    md += "---:|";
+  md += "\n";
+  double fastest = kNaN;
+  for (const MethodRun& run : r.runs)
+    if (run.quality && (std::isnan(fastest) || run.seconds < fastest)) fastest = run.seconds;
+  for (const MethodRun& run : r.runs) {
+    const bool quickest = run.quality && seconds_text(run.seconds) == seconds_text(fastest);
+    md +=
+        fmt::format("| `{}` | {} | {} |", run.method.name, status_name(run.status),
+                    quickest ? "**" + seconds_text(run.seconds) + "**" : seconds_text(run.seconds));
+    for (const Metric& m : metrics()) {
+      if (!run.quality) {
+        md += " - |";
+        continue;
+      }
+      const std::string text = shown(m.of(*run.quality), m.format);
+      md += is_best(r, run, m) ? fmt::format(" **{}** |", text) : fmt::format(" {} |", text);
+    }
+    md += "\n";
+  }
+  md +=
+      "\n**Bold**: the best value of the rows with a mesh (for boundary loops and chi: equal to "
+      "the input's). SJ: scaled Jacobian of a quad (min over its corners; 1 = square, <= 0 = "
+      "inverted). Angle deviation: |corner angle - 90| in degrees over all quad corners. "
+      "Edge mean: mean edge length, to set against the target size. "
+      "Irregular vertices: interior vertices with valence other than 4. Hausdorff: two-sided "
+      "distance to the input triangulation / its bounding-box diagonal. Triangles are counted, "
+      "not measured.\n\n";
+  md += fmt::format("**Verdict.** {}\n\n", report_verdict(r));
+  md += fmt::format("![Angle deviation of every method]({})\n\n", kAngleHistogramFile);
+  md += fmt::format("![Scaled Jacobian of every method]({})\n\n", kJacobianHistogramFile);
+  md += "## Methods\n\n";
+  for (const MethodRun& run : r.runs) {
+    md += fmt::format("- `{}`: {}. Files: `{}`", run.method.name, run.method.description,
+                      run.method.mesh_file);
+    if (!run.method.script_file.empty()) md += fmt::format(", `{}`", run.method.script_file);
+    md += fmt::format(", `{}.log`.", run.method.name);
+    if (!run.quality) md += fmt::format(" **{}**: {}.", status_name(run.status), run.detail);
+    md += "\n";
+  }
+  md +=
+      "\nOpen the meshes side by side: `gmsh quadmesh.msh gmsh-frontal-blossom.msh` "
+      "(Tools > Statistics; Tools > Options > Mesh > Visibility).\n";
+  return md;
+}
+
+namespace {
+
+std::string histogram_picture(const ComparisonReport& r, const HistogramPicture& picture,
+                              const std::function<Histogram(const MethodRun&)>& of) {
+  std::vector<HistogramSeries> series;
+  for (const MethodRun& run : r.runs) {
+    HistogramSeries s;
+    s.name = run.method.name;
+    s.present = run.quality.has_value();
+    if (s.present)
+      s.histogram = of(run);
+    else
+      s.note = fmt::format("{}: no mesh", status_name(run.status));
+    series.push_back(std::move(s));
+  }
+  return histogram_svg(picture, series);
+}
+
+}  // namespace
+
+std::string angle_histogram_svg(const ComparisonReport& r) {
+  HistogramPicture picture;
+  picture.title = fmt::format("Corner angle deviation |angle - 90 deg| ({})",
+                              std::filesystem::path(r.input).filename().string());
+  picture.x_label = "deviation from 90 degrees (2.5-degree bins; the last holds everything above)";
+  picture.y_label = "share of the quad corners";
+  picture.unit = "quad corners";
+  return histogram_picture(r, picture, [](const MethodRun& run) {
+    return make_histogram(run.samples.angle_deviation_deg, 0.0, 90.0, 36);
+  });
+}
+
+std::string jacobian_histogram_svg(const ComparisonReport& r) {
+  HistogramPicture picture;
+  picture.title = fmt::format("Scaled Jacobian per quad ({})",
+                              std::filesystem::path(r.input).filename().string());
+  picture.x_label =
+      "min scaled Jacobian of the quad (1 = square; the first bin holds the inverted)";
+  picture.y_label = "share of the quads (log scale)";
+  picture.log_y = true;
+  return histogram_picture(r, picture, [](const MethodRun& run) {
+    return make_histogram(run.samples.scaled_jacobian, 0.0, 1.0, 40);
+  });
+}
+
+}  // namespace qm::tools

@@ -1,0 +1,226 @@
+// quadmesh compare FILE [--size H|P%] [--out DIR] [--timeout S] [--gmsh PATH]:
+// ours and Gmsh's quad meshing on the same input and size, in one run, each in a
+// child process with a time limit; every mesh measured by the same quality module
+// against the same reference (README "quadmesh compare").
+//
+// Test hook: QUADMESH_COMPARE_CRASH=NAME[,NAME...] makes those methods' child
+// processes raise SIGSEGV instead of running (they must then be reported as
+// `crashed` while the tool still succeeds).
+#include "io/file_format.h"
+#include "io/read_polygon_mesh.h"
+#include "io/write_mesh.h"
+#include "tools/common/exit_codes.h"
+#include "tools/common/input_surface.h"
+#include "tools/compare/child_process.h"
+#include "tools/compare/comparison_report.h"
+#include "tools/compare/methods.h"
+#include "tools/quadmesh/commands.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace qm::tools {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+double bounding_box_diagonal(const TriangleSoup& soup) {
+  if (soup.points.empty()) return 0.0;
+  Vec3 lo = soup.points.front(), hi = lo;
+  for (const Vec3& p : soup.points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return (hi - lo).norm();
+}
+
+/// The methods named in QUADMESH_COMPARE_CRASH (comma-separated).
+bool crash_requested(const std::string& name) {
+  const char* value = std::getenv("QUADMESH_COMPARE_CRASH");
+  if (value == nullptr) return false;
+  std::stringstream list(value);
+  for (std::string item; std::getline(list, item, ',');)
+    if (item == name) return true;
+  return false;
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out)
+    throw Error(ErrorCode::bad_input, fmt::format("{}: cannot write the file", path.string()));
+}
+
+/// The first error message in a method's log: ours print "quadmesh: error: ...",
+/// Gmsh "Error   : ..."; "" if there is none.
+std::string first_error_line(const std::string& log_path) {
+  std::ifstream in(log_path);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("quadmesh: error: ", 0) == 0) return line.substr(17, 300);
+    if (line.rfind("Error", 0) == 0) {
+      const auto text = line.find_first_not_of(" :", 5);
+      return text == std::string::npos ? line.substr(0, 300) : line.substr(text, 300);
+    }
+  }
+  return {};
+}
+
+/// Runs one method in its child process and measures its mesh.
+MethodRun run_method(const Method& method, const fs::path& dir, const TriangleSoup& reference,
+                     double timeout) {
+  MethodRun run;
+  run.method = method;
+  std::error_code ignored;
+  fs::remove(dir / method.mesh_file, ignored);  // never measure a previous run's mesh
+  if (!method.script_file.empty()) write_text(dir / method.script_file, method.script);
+
+  ChildOptions child;
+  child.timeout_seconds = timeout;
+  child.log_path = (dir / (method.name + ".log")).string();
+  child.working_dir = dir.string();
+  child.crash_on_purpose = crash_requested(method.name);
+  const ChildResult result = run_child(method.argv, child);
+  run.status = result.status;
+  run.seconds = result.seconds;
+  run.detail = result.detail;
+  if (result.status == ChildStatus::failed) {
+    const std::string error = first_error_line(child.log_path);
+    if (!error.empty()) run.detail += ": " + error;
+  }
+  if (result.status != ChildStatus::ok) return run;
+
+  try {
+    const PolygonMesh mesh = io::read_polygon_mesh((dir / method.mesh_file).string());
+    run.quality = quad_quality(mesh, &reference);
+    run.samples = quad_shape_samples(mesh);
+  } catch (const Error& e) {
+    run.status = ChildStatus::failed;
+    run.detail = fmt::format("no usable mesh: {}", e.what());
+  }
+  return run;
+}
+
+/// What `gmsh --version` prints (Gmsh writes it on stderr), or "".
+std::string gmsh_version(const std::string& gmsh, const fs::path& dir) {
+  ChildOptions child;
+  child.timeout_seconds = 20;
+  child.log_path = (dir / "gmsh-version.log").string();
+  const ChildResult result = run_child({gmsh, "--version"}, child);
+  std::ifstream in(child.log_path);
+  std::string version;
+  std::getline(in, version);
+  in.close();
+  std::error_code ignored;
+  fs::remove(child.log_path, ignored);
+  return result.status == ChildStatus::ok ? version : std::string();
+}
+
+std::string summary_line(const MethodRun& run) {
+  if (!run.quality)
+    return fmt::format("{:<32} {:<8} {:>8.2f} s  {}", run.method.name, status_name(run.status),
+                       run.seconds, run.detail);
+  const QuadQuality& q = *run.quality;
+  return fmt::format(
+      "{:<32} {:<8} {:>8.2f} s  {:>7} quads {:>5} tri  min SJ {:6.3f}  angle dev {:5.2f} deg  "
+      "{:>5} irregular",
+      run.method.name, status_name(run.status), run.seconds, q.quads, q.triangles,
+      q.min_scaled_jacobian, q.angle_dev_mean, q.irregular_interior);
+}
+
+}  // namespace
+
+int run_compare(const CompareOptions& options, const CommonOptions& common) {
+  const Progress progress(common.quiet);
+  const fs::path input = fs::absolute(options.input);
+  const fs::path dir = options.out_dir.empty() ? fs::path("compare-" + input.stem().string())
+                                               : fs::path(options.out_dir);
+
+  // The reference: the input triangulation as `quadmesh mesh` reads it.
+  io::ReadOptions read;
+  read.cad_mesh_size = common.cad_mesh_size;
+  read.quad_size = options.size;
+  read.quad_size_relative = options.size_relative;
+  InputSurface in = load_input_surface(input.string(), read, common.largest_component, progress);
+  double diagonal = bounding_box_diagonal(in.surface.soup);
+  const double size = options.size > 0            ? options.size
+                      : options.size_relative > 0 ? options.size_relative * diagonal
+                                                  : diagonal / 60.0;
+  const bool cad = io::is_cad(io::format_of(input.string()));
+  if (cad && options.size <= 0) {
+    // Gmsh's CAD bounding box is not the triangulation's: triangulate again at the
+    // absolute size every method gets, so the reference is our method's input.
+    read.quad_size = size;
+    in = load_input_surface(input.string(), read, common.largest_component, progress);
+    diagonal = bounding_box_diagonal(in.surface.soup);
+  }
+  const TriangleSoup& reference = in.surface.soup;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir)) {
+    fmt::print(stderr, "quadmesh: error: {}: cannot create the output folder{}\n", dir.string(),
+               ec ? ": " + ec.message() : std::string());
+    return exit_usage;
+  }
+  progress.stage(
+      fmt::format("writing the reference triangulation {}", (dir / "input.msh").string()));
+  io::write_mesh((dir / "input.msh").string(), io::output_mesh_of(reference));
+
+  ComparisonReport report;
+  report.input = options.input;
+  report.size = size;
+  report.diagonal = diagonal;
+  report.timeout_seconds = options.timeout;
+  report.gmsh_version = gmsh_version(options.gmsh, dir);
+  report.reference_points = reference.points.size();
+  report.reference_triangles = reference.triangles.size();
+  {
+    PolygonMesh triangles;
+    triangles.points = reference.points;
+    for (const Triangle& t : reference.triangles)
+      triangles.faces.push_back({t[0], t[1], t[2]});
+    const QuadQuality topology = quad_quality(triangles, nullptr);
+    report.reference_euler_characteristic = topology.euler_characteristic;
+    report.reference_boundary_loops = topology.boundary_loops;
+  }
+
+  MethodSetup setup;
+  setup.input = input.string();
+  setup.cad = cad;
+  setup.triangulation = "input.msh";
+  setup.size = size;
+  setup.self = own_executable();
+  setup.gmsh = options.gmsh;
+  if (common.largest_component) setup.mesh_extra_args.push_back("--largest-component");
+  if (common.cad_mesh_size > 0) {
+    setup.mesh_extra_args.push_back("--cad-mesh-size");
+    setup.mesh_extra_args.push_back(fmt::format("{:.17g}", common.cad_mesh_size));
+  }
+  for (const Method& method : comparison_methods(setup)) {
+    progress.stage(fmt::format("running {} (limit {:g} s)", method.name, options.timeout));
+    report.runs.push_back(run_method(method, dir, reference, options.timeout));
+    const MethodRun& run = report.runs.back();
+    progress.stage(fmt::format("{}: {} after {:.2f} s{}", method.name, status_name(run.status),
+                               run.seconds, run.detail.empty() ? "" : ": " + run.detail));
+  }
+
+  progress.stage(fmt::format("writing the reports into {}", dir.string()));
+  write_text(dir / "report.json", report_json(report).dump(2) + "\n");
+  write_text(dir / kAngleHistogramFile, angle_histogram_svg(report));
+  write_text(dir / kJacobianHistogramFile, jacobian_histogram_svg(report));
+  write_text(dir / "report.md", report_markdown(report));
+
+  fmt::print("{} at size {:.4g}: {}\n", options.input, size, (dir / "report.md").string());
+  for (const MethodRun& run : report.runs)
+    fmt::print("  {}\n", summary_line(run));
+  fmt::print("{}\n", report_verdict(report));
+  return exit_ok;
+}
+
+}  // namespace qm::tools
