@@ -1,6 +1,7 @@
 #include "libquadmesh/pipeline/mesh_quads.h"
 
 #include "libquadmesh/core/error.h"
+#include "libquadmesh/core/union_find.h"
 #include "libquadmesh/forms/boundary_chords.h"
 #include "libquadmesh/forms/named_loops.h"
 #include "libquadmesh/forms/remesh.h"
@@ -13,6 +14,9 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <map>
+#include <set>
 
 namespace qm {
 
@@ -42,6 +46,31 @@ class Stages {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
+/// (V - E + F over the referenced points, boundary loops) of an oriented face list.
+std::pair<long, int> face_topology(std::size_t points, const std::vector<std::vector<int>>& faces) {
+  std::map<std::pair<int, int>, int> uses;
+  std::vector<char> used(points, 0);
+  for (const auto& f : faces)
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      const int a = f[i], b = f[(i + 1) % f.size()];
+      ++uses[{std::min(a, b), std::max(a, b)}];
+      used[static_cast<std::size_t>(a)] = 1;
+    }
+  long V = 0;
+  for (char u : used) V += u;
+  UnionFind loops(points);
+  std::vector<char> on_boundary(points, 0);
+  for (const auto& [edge, count] : uses)
+    if (count == 1) {
+      loops.unite(edge.first, edge.second);
+      on_boundary[static_cast<std::size_t>(edge.first)] = on_boundary[static_cast<std::size_t>(edge.second)] = 1;
+    }
+  std::set<int> roots;
+  for (std::size_t v = 0; v < points; ++v)
+    if (on_boundary[v]) roots.insert(loops.find(static_cast<int>(v)));
+  return {V - static_cast<long>(uses.size()) + static_cast<long>(faces.size()), static_cast<int>(roots.size())};
+}
+
 double surface_area(const TriangleSoup& soup) {
   double area = 0;
   for (const Triangle& t : soup.triangles)
@@ -58,6 +87,20 @@ double bounding_diagonal(const TriangleSoup& soup) {
     hi = hi.cwiseMax(p);
   }
   return (hi - lo).norm();
+}
+
+/// Euler characteristic and number of boundary loops (connected components of the
+/// boundary edges) of a soup.
+std::pair<long, int> soup_topology(const TriangleSoup& soup) {
+  std::vector<std::vector<int>> faces;
+  for (const Triangle& t : soup.triangles) faces.push_back({t[0], t[1], t[2]});
+  return face_topology(soup.points.size(), faces);
+}
+
+std::pair<long, int> quad_topology(const LatticeQuads& q) {
+  std::vector<std::vector<int>> faces;
+  for (const auto& quad : q.quads) faces.push_back({quad[0], quad[1], quad[2], quad[3]});
+  return face_topology(q.points.size(), faces);
 }
 
 /// Drops points no quad uses (corners of dropped cells).
@@ -135,86 +178,114 @@ QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, con
   } else {
     r.coefficients = most_uniform_combination(soup, basis);
   }
-  r.uniformity = uniformity_ratio(soup, basis, r.coefficients);
-  FaceMap h = linear_combination(basis, r.coefficients);
-  if (total_image_area(h) < 0) {  // keep the input's orientation
-    h = conjugated(h);
-    for (FaceMap& b : basis) b = conjugated(b);
-  }
-
-  // scale: quads ~ area / size^2 = s^2 sum |h|^2 dA
-  r.expected_quads = options.quads > 0 ? static_cast<double>(options.quads)
-                                       : area / (r.size_requested * r.size_requested);
-  r.scale = std::sqrt(r.expected_quads / image_area_sum(h));
-  {
-    // at least 4 quad edges on every boundary loop
-    SurfaceAdjacency adjacency = surface_adjacency(soup);
-    for (const auto& loop : adjacency.boundary_loops) {
-      double variation = 0;
-      for (std::size_t i = 0; i < loop.size(); ++i)
-        variation += std::abs(edge_value(soup, adjacency, h, loop[i], loop[(i + 1) % loop.size()]).real());
-      if (variation > 0 && r.scale * variation < 4.5) r.scale = 4.5 / variation;
+  // One attempt with the coefficients c: everything after the forms. With --form
+  // auto, when the quads do not keep the input's Euler characteristic and boundary
+  // loops (folds the untangling could not remove), the basis forms are tried in turn
+  // (the forms are computed once; an attempt costs a fraction of them) and the first
+  // that keeps them is used.
+  const QuadMeshResult preamble = r;
+  auto attempt = [&](const Eigen::VectorXd& coefficients, TriangleSoup soup, std::vector<FaceMap> basis) {
+    QuadMeshResult r = preamble;
+    r.coefficients = coefficients;
+    r.uniformity = uniformity_ratio(soup, basis, r.coefficients);
+    FaceMap h = linear_combination(basis, r.coefficients);
+    if (total_image_area(h) < 0) {  // keep the input's orientation
+      h = conjugated(h);
+      for (FaceMap& b : basis) b = conjugated(b);
     }
-  }
-  r.size = std::sqrt(area / (r.scale * r.scale * image_area_sum(h)));
-  FaceMap target = scaled(h, r.scale);
 
-  stages.next("zeros", "placing the zeros at vertices");
-  {
+    // scale: quads ~ area / size^2 = s^2 sum |h|^2 dA
+    r.expected_quads = options.quads > 0 ? static_cast<double>(options.quads)
+                                         : area / (r.size_requested * r.size_requested);
+    r.scale = std::sqrt(r.expected_quads / image_area_sum(h));
+    {
+      // at least 4 quad edges on every boundary loop
+      SurfaceAdjacency adjacency = surface_adjacency(soup);
+      for (const auto& loop : adjacency.boundary_loops) {
+        double variation = 0;
+        for (std::size_t i = 0; i < loop.size(); ++i)
+          variation += std::abs(edge_value(soup, adjacency, h, loop[i], loop[(i + 1) % loop.size()]).real());
+        if (variation > 0 && r.scale * variation < 4.5) r.scale = 4.5 / variation;
+      }
+    }
+    r.size = std::sqrt(area / (r.scale * r.scale * image_area_sum(h)));
+    FaceMap target = scaled(h, r.scale);
+
+    stages.next("zeros", "placing the zeros at vertices");
+    {
+      const SurfaceAdjacency adjacency = surface_adjacency(soup);
+      r.zeros = map_zeros(soup, adjacency, target);
+    }
+    for (const MapZero& z : r.zeros.zeros)
+      if (z.order > 0 && z.representative >= 0) r.zero_vertices.push_back({z.representative, z.order, z.on_boundary});
+    r.zero_vertices = merge_close_zeros(soup, target, r.zero_vertices, 1.0);
+    for (const ZeroVertex& c : boundary_corners(soup, options.corner_angle_deg, r.size, r.zero_vertices))
+      r.zero_vertices.push_back(c);
+    {
+      std::vector<FaceMap*> maps{&target};
+      for (FaceMap& b : basis) maps.push_back(&b);
+      r.star_splits = refine_zero_stars(soup, maps, r.zero_vertices);
+    }
+
+    stages.next("quantization", "quantizing (integer periods, boundary levels, zeros and corners on the lattice)");
     const SurfaceAdjacency adjacency = surface_adjacency(soup);
-    r.zeros = map_zeros(soup, adjacency, target);
-  }
-  for (const MapZero& z : r.zeros.zeros)
-    if (z.order > 0 && z.representative >= 0) r.zero_vertices.push_back({z.representative, z.order, z.on_boundary});
-  r.zero_vertices = merge_close_zeros(soup, target, r.zero_vertices, 1.0);
-  for (const ZeroVertex& c : boundary_corners(soup, options.corner_angle_deg, r.size, r.zero_vertices))
-    r.zero_vertices.push_back(c);
-  {
-    std::vector<FaceMap*> maps{&target};
-    for (FaceMap& b : basis) maps.push_back(&b);
-    r.star_splits = refine_zero_stars(soup, maps, r.zero_vertices);
-  }
-
-  stages.next("quantization", "quantizing (integer periods, boundary levels, zeros and corners on the lattice)");
-  const SurfaceAdjacency adjacency = surface_adjacency(soup);
-  PeriodLoops loops;
-  {
-    const NamedLoops named = named_loops(to_surface_mesh(soup));
-    loops.boundaries = named.boundaries;
-    loops.bridges = named.bridges;
-    loops.handles = named.handles;
-  }
-  r.quantization = quantize(soup, adjacency, target, basis, r.zero_vertices, loops);
-  if (r.quantization.flipped > 0) {
-    stages.next("untangling", fmt::format("untangling {} folded triangles", r.quantization.flipped));
-    std::vector<char> pinned(soup.points.size(), 0);
-    for (const ZeroVertex& z : r.zero_vertices) pinned[static_cast<std::size_t>(z.vertex)] = 1;
-    for (const ZeroVertex& z : r.zero_vertices) {
-      // the cone's and its model star (fold-free by construction; an average
-      // cannot reproduce an image angle other than 2 pi)
-      for (int v : vertex_ring(soup, adjacency, z.vertex).neighbours) if (!pinned[static_cast<std::size_t>(v)]) pinned[static_cast<std::size_t>(v)] = 2;
+    PeriodLoops loops;
+    {
+      const NamedLoops named = named_loops(to_surface_mesh(soup));
+      loops.boundaries = named.boundaries;
+      loops.bridges = named.bridges;
+      loops.handles = named.handles;
     }
-    r.untangle = untangle(soup, adjacency, r.quantization.param, pinned);
-  }
+    r.quantization = quantize(soup, adjacency, target, basis, r.zero_vertices, loops);
+    if (r.quantization.flipped > 0) {
+      stages.next("untangling", fmt::format("untangling {} folded triangles", r.quantization.flipped));
+      std::vector<char> pinned(soup.points.size(), 0);
+      for (const ZeroVertex& z : r.zero_vertices) pinned[static_cast<std::size_t>(z.vertex)] = 1;
+      for (const ZeroVertex& z : r.zero_vertices) {
+        // the cone's and its model star (fold-free by construction; an average
+        // cannot reproduce an image angle other than 2 pi)
+        for (int v : vertex_ring(soup, adjacency, z.vertex).neighbours) if (!pinned[static_cast<std::size_t>(v)]) pinned[static_cast<std::size_t>(v)] = 2;
+      }
+      r.untangle = untangle(soup, adjacency, r.quantization.param, pinned);
+    }
 
-  if (options.rotate)  // i h: a quarter turn of the plane maps the lattice onto itself
-    r.quantization.param = scaled(r.quantization.param, Complex(0, 1));
-  stages.next("extraction", "extracting the quads");
-  r.quads = extract_lattice_quads(soup, adjacency, r.quantization.param, r.extraction);
-  compact(r.quads);
-  std::vector<int> loop_of(soup.points.size(), -1);
-  for (std::size_t k = 0; k < loops.boundaries.size(); ++k)
-    for (int v : loops.boundaries[k]) loop_of[static_cast<std::size_t>(v)] = static_cast<int>(k);
-  for (const SurfaceLocation& loc : r.quads.locations) {
-    int loop = -1;
-    if (loc.kind == SurfaceLocation::Kind::vertex) loop = loop_of[static_cast<std::size_t>(loc.a)];
-    if (loc.kind == SurfaceLocation::Kind::edge && adjacency.is_boundary_edge(loc.a, loc.b))
-      loop = loop_of[static_cast<std::size_t>(loc.a)];
-    r.boundary_loop_of_point.push_back(loop);
+    if (options.rotate)  // i h: a quarter turn of the plane maps the lattice onto itself
+      r.quantization.param = scaled(r.quantization.param, Complex(0, 1));
+    stages.next("extraction", "extracting the quads");
+    r.quads = extract_lattice_quads(soup, adjacency, r.quantization.param, r.extraction);
+    compact(r.quads);
+    std::vector<int> loop_of(soup.points.size(), -1);
+    for (std::size_t k = 0; k < loops.boundaries.size(); ++k)
+      for (int v : loops.boundaries[k]) loop_of[static_cast<std::size_t>(v)] = static_cast<int>(k);
+    for (const SurfaceLocation& loc : r.quads.locations) {
+      int loop = -1;
+      if (loc.kind == SurfaceLocation::Kind::vertex) loop = loop_of[static_cast<std::size_t>(loc.a)];
+      if (loc.kind == SurfaceLocation::Kind::edge && adjacency.is_boundary_edge(loc.a, loc.b))
+        loop = loop_of[static_cast<std::size_t>(loc.a)];
+      r.boundary_loop_of_point.push_back(loop);
+    }
+
+    r.surface = std::move(soup);
+    return r;
+  };
+  std::vector<Eigen::VectorXd> candidates{r.coefficients};
+  if (options.coefficients.empty() && options.form < 0)
+    for (int k = 0; k < G; ++k) candidates.push_back(Eigen::VectorXd::Unit(G, k));
+  const std::pair<long, int> input_topology = soup_topology(soup);
+  QuadMeshResult best;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (i > 0)
+      stages.next("form_choice", fmt::format("the quads do not keep the input's topology: trying symmetric "
+                                             "basis form {} of {}", i, G));
+    QuadMeshResult a = attempt(candidates[i], soup, basis);
+    a.form_attempts = static_cast<int>(i + 1);
+    const bool conforming = quad_topology(a.quads) == input_topology;
+    if (i == 0 || conforming) best = std::move(a);
+    if (conforming) break;
   }
   stages.close();
-  r.surface = std::move(soup);
-  return r;
+  best.timings = r.timings;
+  return best;
 }
 
 }  // namespace qm

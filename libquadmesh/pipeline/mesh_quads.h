@@ -47,6 +47,7 @@ struct QuadMeshResult {
   bool remeshed = false;         ///< the input was remeshed first
   double input_hodge_star_squared = 0;  ///< ||Lambda^2 + I|| on the input triangulation
   Eigen::VectorXd coefficients;  ///< h = sum c_k h_k (unit vector), before rotation
+  int form_attempts = 1;         ///< forms tried (auto tries the basis forms when the topology breaks)
   double uniformity = 0;         ///< R(c) of form_choice.h (1 = uniform |h|)
   double scale = 0;              ///< s: the grid is the integer lattice of s h
   double size = 0;               ///< the target edge length that s implies
