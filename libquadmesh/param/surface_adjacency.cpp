@@ -6,29 +6,23 @@ namespace qm {
 
 SurfaceAdjacency surface_adjacency(const TriangleSoup& soup) {
   SurfaceAdjacency a;
+  a.soup = &soup;
   const std::size_t nV = soup.points.size();
   a.vertex_faces.assign(nV, {});
   a.boundary_vertex.assign(nV, 0);
   a.loop_of_vertex.assign(nV, -1);
-  a.directed.reserve(3 * soup.triangles.size());
-  for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
-    const Triangle& t = soup.triangles[f];
-    for (int i = 0; i < 3; ++i) {
-      const int j = (i + 1) % 3;
-      a.vertex_faces[static_cast<std::size_t>(t[i])].push_back(static_cast<int>(f));
-      a.directed[SurfaceAdjacency::key(t[i], t[j])] = EdgeCorner{static_cast<int>(f), i, j};
-    }
-  }
-  // boundary edges a->b: no triangle holds b->a; next boundary vertex after b is unique
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f)
+    for (int v : soup.triangles[f]) a.vertex_faces[static_cast<std::size_t>(v)].push_back(static_cast<int>(f));
+  // boundary edges u->w: no triangle holds w->u; the next boundary vertex after u is unique
   std::vector<int> next(nV, -1);
-  for (const auto& [k, e] : a.directed) {
-    const int u = soup.triangles[static_cast<std::size_t>(e.face)][e.i];
-    const int w = soup.triangles[static_cast<std::size_t>(e.face)][e.j];
-    if (a.find(w, u).face < 0) {
-      next[static_cast<std::size_t>(u)] = w;
-      a.boundary_vertex[static_cast<std::size_t>(u)] = a.boundary_vertex[static_cast<std::size_t>(w)] = 1;
+  for (const Triangle& t : soup.triangles)
+    for (int i = 0; i < 3; ++i) {
+      const int u = t[i], w = t[(i + 1) % 3];
+      if (a.find(w, u).face < 0) {
+        next[static_cast<std::size_t>(u)] = w;
+        a.boundary_vertex[static_cast<std::size_t>(u)] = a.boundary_vertex[static_cast<std::size_t>(w)] = 1;
+      }
     }
-  }
   for (std::size_t v = 0; v < nV; ++v) {
     if (next[v] < 0 || a.loop_of_vertex[v] >= 0) continue;
     std::vector<int> loop;

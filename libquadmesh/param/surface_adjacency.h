@@ -5,8 +5,6 @@
 
 #include "libquadmesh/core/triangle_soup.h"
 
-#include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 namespace qm {
@@ -19,21 +17,21 @@ struct EdgeCorner {
 };
 
 struct SurfaceAdjacency {
+  const TriangleSoup* soup = nullptr;          ///< the soup described (must outlive this)
   std::vector<std::vector<int>> vertex_faces;  ///< faces at each vertex (any order)
-  std::unordered_map<std::uint64_t, EdgeCorner> directed;  ///< key(a, b) -> its triangle
   std::vector<char> boundary_vertex;
   /// Boundary loops, each in the direction of its triangles (the surface on the left).
   std::vector<std::vector<int>> boundary_loops;
   std::vector<int> loop_of_vertex;  ///< boundary loop of a boundary vertex, else -1
 
-  static std::uint64_t key(int a, int b) {
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-           static_cast<std::uint32_t>(b);
-  }
-  /// The triangle holding the directed edge a->b, or face -1.
+  /// The triangle holding the directed edge a->b, or face -1 (a scan of a's faces).
   EdgeCorner find(int a, int b) const {
-    const auto it = directed.find(key(a, b));
-    return it == directed.end() ? EdgeCorner{} : it->second;
+    for (int f : vertex_faces[static_cast<std::size_t>(a)]) {
+      const Triangle& t = soup->triangles[static_cast<std::size_t>(f)];
+      for (int i = 0; i < 3; ++i)
+        if (t[i] == a && t[(i + 1) % 3] == b) return EdgeCorner{f, i, (i + 1) % 3};
+    }
+    return EdgeCorner{};
   }
   bool is_boundary_edge(int a, int b) const {
     return (find(a, b).face < 0) != (find(b, a).face < 0);

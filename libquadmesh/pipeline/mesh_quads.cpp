@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -269,14 +270,21 @@ QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, con
     return r;
   };
   std::vector<Eigen::VectorXd> candidates{r.coefficients};
-  if (options.coefficients.empty() && options.form < 0)
-    for (int k = 0; k < G; ++k) candidates.push_back(Eigen::VectorXd::Unit(G, k));
+  if (options.coefficients.empty() && options.form < 0) {
+    // the basis forms, most uniform first
+    std::vector<std::pair<double, int>> order;
+    for (int k = 0; k < G; ++k) order.push_back({uniformity_ratio(soup, basis, Eigen::VectorXd::Unit(G, k)), k});
+    std::sort(order.begin(), order.end());
+    for (const auto& [ratio, k] : order) candidates.push_back(Eigen::VectorXd::Unit(G, k));
+  }
   const std::pair<long, int> input_topology = soup_topology(soup);
   QuadMeshResult best;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     if (i > 0)
       stages.next("form_choice", fmt::format("the quads do not keep the input's topology: trying symmetric "
-                                             "basis form {} of {}", i, G));
+                                             "basis form {} ({} of {})", candidates[i].maxCoeff() > 0.5
+                                                 ? static_cast<int>(std::max_element(candidates[i].data(), candidates[i].data() + G) - candidates[i].data()) + 1
+                                                 : 0, i, G));
     QuadMeshResult a = attempt(candidates[i], soup, basis);
     a.form_attempts = static_cast<int>(i + 1);
     const bool conforming = quad_topology(a.quads) == input_topology;

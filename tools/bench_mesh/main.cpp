@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 
 int main(int argc, char** argv) {
@@ -29,14 +30,24 @@ int main(int argc, char** argv) {
     const auto start = std::chrono::steady_clock::now();
     const qm::QuadMeshResult r = qm::mesh_quads(surface.soup, options);
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // stages in order of first appearance, summed over the attempts of --form auto
+    std::vector<std::pair<std::string, double>> stages;
+    for (const auto& [name, s] : r.timings) {
+      auto it = std::find_if(stages.begin(), stages.end(), [&](const auto& p) { return p.first == name; });
+      if (it == stages.end())
+        stages.emplace_back(name, s);
+      else
+        it->second += s;
+    }
     double forms = 0;
-    for (const auto& [name, s] : r.timings)
+    for (const auto& [name, s] : stages)
       if (name == "forms") forms += s;
     fmt::print("input            {} ({} vertices, {} triangles, doubled genus {})\n", file,
                surface.soup.points.size(), surface.soup.triangles.size(), r.doubled_genus);
-    fmt::print("output           {} quads at {}% of the diagonal\n", r.quads.quads.size(), percent);
+    fmt::print("output           {} quads at {}% of the diagonal ({} form(s) tried)\n", r.quads.quads.size(), percent,
+               r.form_attempts);
     fmt::print("forms stage      {:.3f} s  = 1.00\n", forms);
-    for (const auto& [name, s] : r.timings)
+    for (const auto& [name, s] : stages)
       if (name != "forms") fmt::print("  {:<16} {:.3f} s  = {:.2f}\n", name, s, s / forms);
     fmt::print("whole mesh job   {:.3f} s  = {:.2f} x the forms stage\n", total, total / forms);
   } catch (const std::exception& e) {

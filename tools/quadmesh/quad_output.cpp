@@ -116,6 +116,7 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
   j["form"] = {{"coefficients", std::vector<double>(result.coefficients.data(),
                                                      result.coefficients.data() + result.coefficients.size())},
                {"rotate", options.rotate},
+               {"attempts", result.form_attempts},
                {"uniformity_ratio", result.uniformity},
                {"scale", result.scale},
                {"size_requested", result.size_requested},
