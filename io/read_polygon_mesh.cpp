@@ -2,6 +2,7 @@
 
 #include "io/cgal_polygon_soup.h"
 #include "io/file_format.h"
+#include "io/gmsh_nodes.h"
 #include "io/gmsh_session.h"
 #include "io/text_diagnostics.h"
 #include "libquadmesh/core/error.h"
@@ -75,29 +76,9 @@ PolygonMesh read_with_gmsh(const std::string& path) {
   const std::string error = session.first_error();
   if (!error.empty()) fail(fmt::format("{}: Gmsh could not read it: {}", path, error));
 
-  std::vector<std::size_t> node_tags;
-  std::vector<double> coords, params;
-  gmsh::model::mesh::getNodes(node_tags, coords, params, -1, -1, false, false);
-  std::unordered_map<std::size_t, std::size_t> node_slot;
-  node_slot.reserve(node_tags.size());
-  for (std::size_t i = 0; i < node_tags.size(); ++i)
-    node_slot.emplace(node_tags[i], i);
-
   PolygonMesh mesh;
-  std::unordered_map<std::size_t, int> node_index;  // only nodes used by a face
-  auto point_of = [&](std::size_t tag) {
-    const auto found = node_index.find(tag);
-    if (found != node_index.end()) return found->second;
-    const auto slot = node_slot.find(tag);
-    if (slot == node_slot.end())
-      fail(fmt::format("{}: an element refers to node {}, which the file does not define", path,
-                       tag));
-    const std::size_t s = slot->second;
-    const int index = static_cast<int>(mesh.points.size());
-    mesh.points.emplace_back(coords[3 * s], coords[3 * s + 1], coords[3 * s + 2]);
-    node_index.emplace(tag, index);
-    return index;
-  };
+  GmshNodes nodes(path);  // only nodes used by a face become points
+  auto point_of = [&](std::size_t tag) { return nodes.use(tag, mesh.points); };
   // Gmsh element types: 2 is the 3-node triangle, 3 the 4-node quadrangle
   for (const auto& [type, corners] : {std::pair<int, std::size_t>{2, 3}, {3, 4}}) {
     std::vector<std::size_t> element_tags, element_nodes;

@@ -1,6 +1,7 @@
 #include "io/read_surface.h"
 
 #include "io/cgal_polygon_soup.h"
+#include "io/gmsh_nodes.h"
 #include "io/gmsh_session.h"
 #include "io/text_diagnostics.h"
 #include "libquadmesh/core/error.h"
@@ -139,29 +140,9 @@ SurfaceFile read_with_gmsh(const std::string& path, Format format, const ReadOpt
   file.format = format;
   if (is_cad(format)) file.cad_mesh_size = triangulate_cad(path, options, session);
 
-  std::vector<std::size_t> node_tags;
-  std::vector<double> coords, params;
-  gmsh::model::mesh::getNodes(node_tags, coords, params, -1, -1, false, false);
-  std::unordered_map<std::size_t, std::size_t> node_slot;
-  node_slot.reserve(node_tags.size());
-  for (std::size_t i = 0; i < node_tags.size(); ++i) node_slot.emplace(node_tags[i], i);
-
   // Only nodes used by surface elements become points, in order of first use.
-  std::unordered_map<std::size_t, int> node_index;
-  auto point_of = [&](std::size_t tag) {
-    const auto found = node_index.find(tag);
-    if (found != node_index.end()) return found->second;
-    const auto slot = node_slot.find(tag);
-    if (slot == node_slot.end())
-      fail(fmt::format("{}: an element refers to node {}, which the file does not define", path,
-                       tag));
-    const std::size_t s = slot->second;
-    const int index = static_cast<int>(file.soup.points.size());
-    file.soup.points.emplace_back(coords[3 * s], coords[3 * s + 1], coords[3 * s + 2]);
-    file.soup.point_labels.push_back(static_cast<std::int64_t>(tag));
-    node_index.emplace(tag, index);
-    return index;
-  };
+  GmshNodes nodes(path);
+  auto point_of = [&](std::size_t tag) { return nodes.use(tag, file.soup.points, &file.soup.point_labels); };
 
   std::vector<int> types;
   std::vector<std::vector<std::size_t>> element_tags, element_nodes;
@@ -179,7 +160,7 @@ SurfaceFile read_with_gmsh(const std::string& path, Format format, const ReadOpt
           add_polygon(file.soup, corners, static_cast<std::int64_t>(element_tags[k][e]));
     }
   }
-  collect_cad_curves(node_index, file.soup.cad);
+  collect_cad_curves(nodes.used(), file.soup.cad);
   return file;
 }
 
