@@ -218,10 +218,10 @@ ConeDisk cone_disk(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, 
   disk.star = star;
   for (std::size_t k = 0; k < order.size(); ++k) {
     // pure model on the star, blending smoothly into the target towards the rim;
-    // a corner's disk beyond its star is the target translated (its image angle is
-    // the target's, pi, so the target needs no bending there)
+    // a corner's whole disk is the target translated (the target's image angle at a
+    // corner is already pi and not folded: it needs no bending there)
     const double rho = std::abs(reach[order[k]]) / disk_radius;
-    double beta = k < star ? 0.0 : cone.corner ? 1.0 : std::clamp((rho - 0.25) / 0.75, 0.0, 1.0);
+    double beta = cone.corner ? 1.0 : k < star ? 0.0 : std::clamp((rho - 0.25) / 0.75, 0.0, 1.0);
     beta = beta * beta * (3 - 2 * beta);
     disk.vertices.push_back(order[k]);
     disk.model.push_back((1 - beta) * a * W[k] + beta * reach[order[k]]);

@@ -19,10 +19,12 @@
 // breadth-first spanning tree, Xi = 0 at the first vertex of boundary 0), and psi
 // a single-valued function found by one sparse Cholesky solve per component with
 // Dirichlet values at the constrained vertices. Transitions across cut edges are
-// translations by the periods of xi (integers). Around a zero z of order m the
-// whole star is fixed to the local model Phi(z) + a w^(m+1) (w: the star flattened
-// with its angles scaled to 2 pi, or pi at the boundary; a fitted to xi, real on
-// the boundary), which is fold-free by construction (see zero_stars.h).
+// translations by the periods of xi (integers). Around a zero z the star is fixed
+// to the local model Phi(z) + a w^g, w the star flattened with intrinsic polar
+// coordinates and g = image angle / 3D angle sum (a fitted to xi, real on the
+// boundary), fold-free by construction (see zero_stars.h); the rest of a disk of
+// image radius 3/4 cell blends from the model (projected on the tangent plane) into
+// xi translated with the zero. Around a corner the whole disk is xi translated.
 #pragma once
 
 #include "libquadmesh/param/face_map.h"
