@@ -2,6 +2,9 @@
 // read off the parameterization, and the properties every output must have.
 #include "io/read_surface.h"
 #include "libquadmesh/core/error.h"
+#include "libquadmesh/forms/boundary_chords.h"
+#include "libquadmesh/param/form_choice.h"
+#include "libquadmesh/param/surface_forms.h"
 #include "libquadmesh/pipeline/mesh_quads.h"
 #include "libquadmesh/quality/quad_quality.h"
 #include "libquadmesh/topology/topology_report.h"
@@ -144,4 +147,34 @@ TEST_CASE("--form, --coeffs and --rotate choose the differential") {
   QuadMeshOptions bad_form;
   bad_form.form = 3;
   CHECK_THROWS_AS(mesh_quads(soup, bad_form), Error);
+}
+
+TEST_CASE("boundary levels: least-squares rounding that keeps levels apart and in order") {
+  // bunny-open's levels: two ear holes 0.4 apart must not share a level
+  const std::vector<double> levels{0.0, -47.395, -1.908, -0.048, -2.313};
+  const std::vector<double> rounded = round_levels(levels);
+  CHECK(rounded == std::vector<double>{0.0, -47.0, -2.0, 0.0, -3.0});
+  // levels 1/4 apart or closer may share one; a lone level keeps its rounding
+  CHECK(round_levels({0.0, 0.2, 3.6}) == std::vector<double>{0.0, 0.0, 4.0});
+  // three levels in 0.8 need three integers, nearest in the least-squares sense
+  CHECK(round_levels({0.0, 0.4, 0.8}) == std::vector<double>{0.0, 1.0, 2.0});
+  CHECK(round_nonzero(0.3) == 1.0);
+  CHECK(round_nonzero(-0.3) == -1.0);
+  CHECK(round_nonzero(0.2) == 0.0);
+  CHECK(round_nonzero(2.49) == 2.0);
+}
+
+TEST_CASE("--form auto's objective on the annulus: the variance of log|h|^2 of -i dz/z") {
+  // |h| ~ 1/r on 1 <= r <= 2, so log|h|^2 = c - 2 log r; with the area weight r dr:
+  // Var(log r) = E[log^2 r] - E[log r]^2 = 0.216408 - 0.424196^2 = 0.036466, times 4
+  TriangleSoup soup = test::annulus(1.0, 2.0, 24, 192);
+  split_boundary_chords(soup);
+  const SymmetricForms forms = compute_symmetric_forms(to_surface_mesh(soup));
+  const std::vector<FaceMap> basis = symmetric_face_maps(forms, soup);
+  REQUIRE(basis.size() == 1);
+  CHECK(uniformity_ratio(soup, basis, Eigen::VectorXd::Ones(1)) == doctest::Approx(4 * 0.036466).epsilon(0.02));
+  // scale invariant, and the optimum of a one-dimensional space is its unit vector
+  CHECK(uniformity_ratio(soup, basis, -3.0 * Eigen::VectorXd::Ones(1)) ==
+        doctest::Approx(uniformity_ratio(soup, basis, Eigen::VectorXd::Ones(1))));
+  CHECK(std::abs(most_uniform_combination(soup, basis)[0]) == doctest::Approx(1.0));
 }
