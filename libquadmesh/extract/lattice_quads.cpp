@@ -311,4 +311,11 @@ LatticeQuads extract_lattice_quads(const TriangleSoup& soup, const SurfaceAdjace
   return out;
 }
 
+PolygonMesh polygon_mesh(const LatticeQuads& quads) {
+  PolygonMesh mesh;
+  mesh.points = quads.points;
+  for (const auto& quad : quads.quads) mesh.faces.push_back({quad[0], quad[1], quad[2], quad[3]});
+  return mesh;
+}
+
 }  // namespace qm

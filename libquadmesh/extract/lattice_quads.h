@@ -18,6 +18,7 @@
 
 #include "libquadmesh/param/face_map.h"
 #include "libquadmesh/param/surface_adjacency.h"
+#include "libquadmesh/quality/quad_quality.h"
 
 namespace qm {
 
@@ -45,6 +46,9 @@ struct ExtractionReport {
   std::size_t seam_mismatches = 0;     ///< corners whose charts differ by a non-integer translation
   int first_problem_triangle = -1;     ///< a triangle at the first problem met (bad or in a dropped cell)
 };
+
+/// The quads as a PolygonMesh (for the quality module).
+PolygonMesh polygon_mesh(const LatticeQuads& quads);
 
 /// fixed-point units per lattice unit
 constexpr std::int64_t lattice_scale = std::int64_t(1) << 30;

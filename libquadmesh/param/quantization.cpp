@@ -135,7 +135,7 @@ ConeDisk cone_disk(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, 
   std::unordered_map<int, Complex> reach{{c, Complex(0, 0)}};
   std::vector<int> order;
   for (int v : ring.neighbours) {
-    reach[v] = edge_value(soup, adjacency, xi, c, v);
+    reach[v] = edge_value(adjacency, xi, c, v);
     if (!constrained[static_cast<std::size_t>(v)]) order.push_back(v);
   }
   std::vector<int> frontier = ring.neighbours;
@@ -145,7 +145,7 @@ ConeDisk cone_disk(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, 
       for (int f : adjacency.vertex_faces[static_cast<std::size_t>(u)])
         for (int v : soup.triangles[static_cast<std::size_t>(f)]) {
           if (reach.count(v) || constrained[static_cast<std::size_t>(v)]) continue;
-          const Complex at = reach[u] + edge_value(soup, adjacency, xi, u, v);
+          const Complex at = reach[u] + edge_value(adjacency, xi, u, v);
           if (std::abs(at) > disk_radius) continue;
           reach[v] = at;
           order.push_back(v);
@@ -183,15 +183,12 @@ ConeDisk cone_disk(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, 
   std::unordered_map<int, Complex> star_w;
   {
     const std::size_t n = ring.neighbours.size();
+    const std::vector<double> angles = ring_angles(soup, ring, c);
     std::vector<double> theta(n, 0.0);
     double total = 0;
-    for (std::size_t k = 0; k < n; ++k) {
-      if (k + 1 == n && ring.boundary) break;
-      const Vec3 a = soup.points[static_cast<std::size_t>(ring.neighbours[k])] - p;
-      const Vec3 b = soup.points[static_cast<std::size_t>(ring.neighbours[(k + 1) % n])] - p;
-      const double angle = std::atan2(a.cross(b).norm(), a.dot(b));
-      if (k + 1 < n) theta[k + 1] = theta[k] + angle;
-      total += angle;
+    for (std::size_t k = 0; k < angles.size(); ++k) {
+      if (k + 1 < n) theta[k + 1] = theta[k] + angles[k];
+      total += angles[k];
     }
     const double gs = cone.image_angle() / total;
     for (std::size_t k = 0; k < n; ++k) {
@@ -277,25 +274,11 @@ std::vector<double> round_levels(const std::vector<double>& levels) {
   return out;
 }
 
-Complex edge_value(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const FaceMap& form,
-                   int a, int b) {
-  (void)soup;
-  EdgeCorner e = adjacency.find(a, b);
-  if (e.face >= 0) {
-    const CornerValues& c = form.corners[static_cast<std::size_t>(e.face)];
-    return c[e.j] - c[e.i];
-  }
-  e = adjacency.find(b, a);
-  QM_ASSERT_MSG(e.face >= 0, "edge_value: not an edge");
-  const CornerValues& c = form.corners[static_cast<std::size_t>(e.face)];
-  return c[e.i] - c[e.j];
-}
-
-Complex path_integral(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const FaceMap& form,
+Complex path_integral(const SurfaceAdjacency& adjacency, const FaceMap& form,
                       const std::vector<int>& path, bool closed) {
   Complex sum = 0;
-  for (std::size_t i = 0; i + 1 < path.size(); ++i) sum += edge_value(soup, adjacency, form, path[i], path[i + 1]);
-  if (closed && path.size() > 1) sum += edge_value(soup, adjacency, form, path.back(), path.front());
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) sum += edge_value(adjacency, form, path[i], path[i + 1]);
+  if (closed && path.size() > 1) sum += edge_value(adjacency, form, path.back(), path.front());
   return sum;
 }
 
@@ -370,10 +353,10 @@ Quantization quantize(const TriangleSoup& soup, const SurfaceAdjacency& adjacenc
     for (Eigen::Index j = 0; j < n; ++j) {
       const auto& path = *list[static_cast<std::size_t>(j)].path;
       for (Eigen::Index k = 0; k < K; ++k) {
-        const Complex p = path_integral(soup, adjacency, basis[static_cast<std::size_t>(k)], path, true);
+        const Complex p = path_integral(adjacency, basis[static_cast<std::size_t>(k)], path, true);
         M(j, k) = imaginary ? p.imag() : p.real();
       }
-      const Complex p = path_integral(soup, adjacency, target, path, true);
+      const Complex p = path_integral(adjacency, target, path, true);
       const double value = imaginary ? p.imag() : p.real();
       rounded.push_back(round_nonzero(value));
       delta[j] = rounded.back() - value;
@@ -399,8 +382,8 @@ Quantization quantize(const TriangleSoup& soup, const SurfaceAdjacency& adjacenc
     for (int i = 0; i < 3; ++i) xi.corners[f][i] += C.corners[f][i];
   // the rounded periods as they came out (exact integers up to round-off)
   for (std::size_t j = 0; j < u_loops.size(); ++j) {
-    const Complex before = path_integral(soup, adjacency, target, *u_loops[j].path, true);
-    const Complex after = path_integral(soup, adjacency, xi, *u_loops[j].path, true);
+    const Complex before = path_integral(adjacency, target, *u_loops[j].path, true);
+    const Complex after = path_integral(adjacency, xi, *u_loops[j].path, true);
     q.periods.push_back({u_loops[j].name, before, after});
   }
 
@@ -414,13 +397,13 @@ Quantization quantize(const TriangleSoup& soup, const SurfaceAdjacency& adjacenc
     for (int v : loops.boundaries[k]) loop_of[static_cast<std::size_t>(v)] = static_cast<int>(k);
   std::vector<double> level(loops.boundaries.size(), 0.0);
   for (std::size_t k = 1; k < loops.boundaries.size(); ++k)
-    level[k] = path_integral(soup, adjacency, xi, loops.bridges[k - 1], false).imag();
+    level[k] = path_integral(adjacency, xi, loops.bridges[k - 1], false).imag();
   const std::vector<double> rounded = round_levels(level);
   std::vector<double> shift(loops.boundaries.size(), 0.0);
   for (std::size_t k = 1; k < loops.boundaries.size(); ++k) {
     shift[k] = rounded[k] - level[k];
     q.periods.push_back({fmt::format("bridge_{}", k),
-                         Complex(0, path_integral(soup, adjacency, target, loops.bridges[k - 1], false).imag()),
+                         Complex(0, path_integral(adjacency, target, loops.bridges[k - 1], false).imag()),
                          Complex(0, rounded[k])});
   }
   for (std::size_t v = 0; v < nV; ++v)
@@ -448,7 +431,7 @@ Quantization quantize(const TriangleSoup& soup, const SurfaceAdjacency& adjacenc
     double last_lattice = std::nan("");
     for (std::size_t i = 0; i < loop.size(); ++i) {
       const int v = loop[i];
-      if (i > 0) position += edge_value(soup, adjacency, xi, loop[i - 1], v).real();
+      if (i > 0) position += edge_value(adjacency, xi, loop[i - 1], v).real();
       if (is_cone[static_cast<std::size_t>(v)]) {
         last_lattice = std::round(position);
         continue;

@@ -79,12 +79,8 @@ double round_nonzero(double x);
 /// levels[0] keeps its own rounding.
 std::vector<double> round_levels(const std::vector<double>& levels);
 
-/// The value of a closed form along the directed edge a->b (a FaceMap difference).
-Complex edge_value(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const FaceMap& form,
-                   int a, int b);
-
 /// The integral of a closed form along a vertex path (closed: back to the start).
-Complex path_integral(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const FaceMap& form,
+Complex path_integral(const SurfaceAdjacency& adjacency, const FaceMap& form,
                       const std::vector<int>& path, bool closed);
 
 /// Integrates a closed form over the surface cut into a disk: faces are joined

@@ -2,6 +2,10 @@
 
 #include "libquadmesh/core/error.h"
 
+#include <Eigen/Geometry>
+
+#include <cmath>
+
 namespace qm {
 
 SurfaceAdjacency surface_adjacency(const TriangleSoup& soup) {
@@ -67,6 +71,30 @@ VertexRing vertex_ring(const TriangleSoup& soup, const SurfaceAdjacency& adjacen
     if (b == start) break;
   }
   return ring;
+}
+
+std::vector<double> ring_angles(const TriangleSoup& soup, const VertexRing& ring, int v) {
+  const Vec3& p = soup.points[static_cast<std::size_t>(v)];
+  const std::size_t n = ring.neighbours.size();
+  std::vector<double> angles;
+  for (std::size_t k = 0; k < ring.faces.size(); ++k) {
+    const Vec3 a = soup.points[static_cast<std::size_t>(ring.neighbours[k])] - p;
+    const Vec3 b = soup.points[static_cast<std::size_t>(ring.neighbours[(k + 1) % n])] - p;
+    angles.push_back(std::atan2(a.cross(b).norm(), a.dot(b)));
+  }
+  return angles;
+}
+
+Complex edge_value(const SurfaceAdjacency& adjacency, const FaceMap& form, int a, int b) {
+  EdgeCorner e = adjacency.find(a, b);
+  if (e.face >= 0) {
+    const CornerValues& c = form.corners[static_cast<std::size_t>(e.face)];
+    return c[e.j] - c[e.i];
+  }
+  e = adjacency.find(b, a);
+  QM_ASSERT_MSG(e.face >= 0, "edge_value: not an edge");
+  const CornerValues& c = form.corners[static_cast<std::size_t>(e.face)];
+  return c[e.i] - c[e.j];
 }
 
 }  // namespace qm

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "libquadmesh/core/triangle_soup.h"
+#include "libquadmesh/param/face_map.h"
 
 #include <vector>
 
@@ -50,5 +51,13 @@ struct VertexRing {
   bool boundary = false;
 };
 VertexRing vertex_ring(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, int v);
+
+/// The 3D corner angle at v of each face of its ring: angles[k] lies between
+/// neighbours[k] and neighbours[k + 1] (ring.faces.size() values).
+std::vector<double> ring_angles(const TriangleSoup& soup, const VertexRing& ring, int v);
+
+/// The value of a closed form (a FaceMap) along the directed edge a->b: the
+/// difference of the images of b and a in a triangle holding the edge.
+Complex edge_value(const SurfaceAdjacency& adjacency, const FaceMap& form, int a, int b);
 
 }  // namespace qm

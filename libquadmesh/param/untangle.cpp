@@ -50,16 +50,6 @@ UntangleReport untangle(const TriangleSoup& soup, const SurfaceAdjacency& adjace
       for (int i = 0; i < 3; ++i)
         if (soup.triangles[static_cast<std::size_t>(f)][i] == v) param.corners[static_cast<std::size_t>(f)][i] += by;
   };
-  auto image_step = [&](int v, int u) {  // image of u minus image of v, in any shared face
-    EdgeCorner e = adjacency.find(v, u);
-    if (e.face < 0) {
-      e = adjacency.find(u, v);
-      const CornerValues& c = param.corners[static_cast<std::size_t>(e.face)];
-      return c[e.i] - c[e.j];
-    }
-    const CornerValues& c = param.corners[static_cast<std::size_t>(e.face)];
-    return c[e.j] - c[e.i];
-  };
   // pinned 1: never moves; 2: moves only after 20 sweeps
   auto movable = [&](int v, int sweep) {
     const char p = pinned[static_cast<std::size_t>(v)];
@@ -85,7 +75,7 @@ UntangleReport untangle(const TriangleSoup& soup, const SurfaceAdjacency& adjace
     for (int v : candidates) {
       const VertexRing ring = vertex_ring(soup, adjacency, v);
       std::vector<Complex> link;  // relative to v's image
-      for (int u : ring.neighbours) link.push_back(image_step(v, u));
+      for (int u : ring.neighbours) link.push_back(edge_value(adjacency, param, v, u));
       const std::size_t n = link.size();
       const std::size_t edges = ring.boundary ? n - 1 : n;
       Complex target;

@@ -48,18 +48,6 @@ void split_edge(TriangleSoup& soup, std::vector<FaceMap*>& maps, int a, int b) {
   soup.cad.edges.insert(soup.cad.edges.end(), split.begin(), split.end());
 }
 
-std::vector<double> angle_sums(const TriangleSoup& soup) {
-  std::vector<double> sum(soup.points.size(), 0.0);
-  for (const Triangle& t : soup.triangles)
-    for (int i = 0; i < 3; ++i) {
-      const Vec3& p = soup.points[static_cast<std::size_t>(t[i])];
-      const Vec3 u = soup.points[static_cast<std::size_t>(t[(i + 1) % 3])] - p;
-      const Vec3 v = soup.points[static_cast<std::size_t>(t[(i + 2) % 3])] - p;
-      sum[static_cast<std::size_t>(t[i])] += std::atan2(u.cross(v).norm(), u.dot(v));
-    }
-  return sum;
-}
-
 namespace {
 
 /// Vertices within `radius` of `source` in the image metric of `map` (edge length
@@ -95,9 +83,8 @@ std::unordered_map<int, double> image_ball(const TriangleSoup& soup, const Surfa
 
 }  // namespace
 
-std::vector<ZeroVertex> merge_close_zeros(const TriangleSoup& soup, const FaceMap& map,
-                                          std::vector<ZeroVertex> zeros, double radius) {
-  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+std::vector<ZeroVertex> merge_close_zeros(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                          const FaceMap& map, std::vector<ZeroVertex> zeros, double radius) {
   // an interior zero this close to the boundary would round onto the boundary's
   // level: it meets its mirror there, a boundary zero of twice its order
   for (ZeroVertex& z : zeros) {
@@ -148,9 +135,9 @@ std::vector<ZeroVertex> merge_close_zeros(const TriangleSoup& soup, const FaceMa
   return merged;
 }
 
-std::vector<ZeroVertex> boundary_corners(const TriangleSoup& soup, double corner_angle_deg, double scale,
+std::vector<ZeroVertex> boundary_corners(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                         double corner_angle_deg, double scale,
                                          const std::vector<ZeroVertex>& taken) {
-  const SurfaceAdjacency adjacency = surface_adjacency(soup);
   std::vector<char> used(soup.points.size(), 0);
   for (const ZeroVertex& z : taken) used[static_cast<std::size_t>(z.vertex)] = 1;
   std::vector<ZeroVertex> corners;
@@ -216,15 +203,9 @@ std::size_t refine_zero_stars(TriangleSoup& soup, std::vector<FaceMap*> maps,
     std::set<std::pair<int, int>> wide;
     for (const ZeroVertex& z : zeros) {
       const VertexRing ring = vertex_ring(soup, adjacency, z.vertex);
-      const Vec3& p = soup.points[static_cast<std::size_t>(z.vertex)];
-      std::vector<double> angles;
+      const std::vector<double> angles = ring_angles(soup, ring, z.vertex);
       double total = 0;
-      for (std::size_t k = 0; k < ring.faces.size(); ++k) {
-        const Vec3 u = soup.points[static_cast<std::size_t>(ring.neighbours[k])] - p;
-        const Vec3 w = soup.points[static_cast<std::size_t>(ring.neighbours[(k + 1) % ring.neighbours.size()])] - p;
-        angles.push_back(std::atan2(u.cross(w).norm(), u.dot(w)));
-        total += angles.back();
-      }
+      for (double a : angles) total += a;
       for (std::size_t k = 0; k < angles.size(); ++k)
         if (angles[k] * z.image_angle() / total > max_model_corner_angle) {
           const int b = ring.neighbours[k], c = ring.neighbours[(k + 1) % ring.neighbours.size()];

@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "libquadmesh/param/face_map.h"
+#include "libquadmesh/param/surface_adjacency.h"
 
 namespace qm {
 
@@ -35,8 +36,8 @@ struct ZeroVertex {
 /// order m within 0.75 radius of the boundary (it would round onto the boundary's
 /// level) becomes a boundary zero of order 2m at the nearest boundary vertex: on
 /// the double it meets its mirror image there.
-std::vector<ZeroVertex> merge_close_zeros(const TriangleSoup& soup, const FaceMap& map,
-                                          std::vector<ZeroVertex> zeros, double radius);
+std::vector<ZeroVertex> merge_close_zeros(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                          const FaceMap& map, std::vector<ZeroVertex> zeros, double radius);
 
 /// Sharp boundary corners as order-0 cones (skipping `taken` vertices): vertices
 /// where the boundary turns by more than `corner_angle_deg`, measured between the
@@ -46,11 +47,10 @@ std::vector<ZeroVertex> merge_close_zeros(const TriangleSoup& soup, const FaceMa
 /// proportion to the distance), turn more than 2.5 times the loop's median turning
 /// (a coarse polygon around a round hole turns at every vertex), and are the
 /// sharpest within `scale` along their loop.
-std::vector<ZeroVertex> boundary_corners(const TriangleSoup& soup, double corner_angle_deg, double scale,
+std::vector<ZeroVertex> boundary_corners(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                         double corner_angle_deg, double scale,
                                          const std::vector<ZeroVertex>& taken);
 
-/// Sum of the 3D corner angles at every vertex.
-std::vector<double> angle_sums(const TriangleSoup& soup);
 
 /// The largest image angle of a triangle corner of a model star, in radians: the
 /// 3D corner angle times image_angle / (3D angle sum at the cone) stays below it.

@@ -1,13 +1,14 @@
 #include "libquadmesh/pipeline/mesh_quads.h"
 
 #include "libquadmesh/core/error.h"
-#include "libquadmesh/core/union_find.h"
 #include "libquadmesh/forms/boundary_chords.h"
 #include "libquadmesh/forms/named_loops.h"
 #include "libquadmesh/forms/remesh.h"
 #include "libquadmesh/param/form_choice.h"
 #include "libquadmesh/param/surface_forms.h"
 #include "libquadmesh/param/untangle.h"
+#include "libquadmesh/quality/hausdorff.h"
+#include "libquadmesh/quality/quad_quality.h"
 
 #include <Eigen/Geometry>
 #include <fmt/format.h>
@@ -16,8 +17,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
-#include <set>
 
 namespace qm {
 
@@ -47,31 +46,6 @@ class Stages {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
-/// (V - E + F over the referenced points, boundary loops) of an oriented face list.
-std::pair<long, int> face_topology(std::size_t points, const std::vector<std::vector<int>>& faces) {
-  std::map<std::pair<int, int>, int> uses;
-  std::vector<char> used(points, 0);
-  for (const auto& f : faces)
-    for (std::size_t i = 0; i < f.size(); ++i) {
-      const int a = f[i], b = f[(i + 1) % f.size()];
-      ++uses[{std::min(a, b), std::max(a, b)}];
-      used[static_cast<std::size_t>(a)] = 1;
-    }
-  long V = 0;
-  for (char u : used) V += u;
-  UnionFind loops(points);
-  std::vector<char> on_boundary(points, 0);
-  for (const auto& [edge, count] : uses)
-    if (count == 1) {
-      loops.unite(edge.first, edge.second);
-      on_boundary[static_cast<std::size_t>(edge.first)] = on_boundary[static_cast<std::size_t>(edge.second)] = 1;
-    }
-  std::set<int> roots;
-  for (std::size_t v = 0; v < points; ++v)
-    if (on_boundary[v]) roots.insert(loops.find(static_cast<int>(v)));
-  return {V - static_cast<long>(uses.size()) + static_cast<long>(faces.size()), static_cast<int>(roots.size())};
-}
-
 double surface_area(const TriangleSoup& soup) {
   double area = 0;
   for (const Triangle& t : soup.triangles)
@@ -81,27 +55,11 @@ double surface_area(const TriangleSoup& soup) {
   return area;
 }
 
-double bounding_diagonal(const TriangleSoup& soup) {
-  Vec3 lo = soup.points.front(), hi = lo;
-  for (const Vec3& p : soup.points) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  return (hi - lo).norm();
-}
-
-/// Euler characteristic and number of boundary loops (connected components of the
-/// boundary edges) of a soup.
-std::pair<long, int> soup_topology(const TriangleSoup& soup) {
-  std::vector<std::vector<int>> faces;
-  for (const Triangle& t : soup.triangles) faces.push_back({t[0], t[1], t[2]});
-  return face_topology(soup.points.size(), faces);
-}
-
-std::pair<long, int> quad_topology(const LatticeQuads& q) {
-  std::vector<std::vector<int>> faces;
-  for (const auto& quad : q.quads) faces.push_back({quad[0], quad[1], quad[2], quad[3]});
-  return face_topology(q.points.size(), faces);
+/// (Euler characteristic, boundary loops) of a polygon mesh, as the quality module
+/// counts them.
+std::pair<int, int> topology_of(const PolygonMesh& mesh) {
+  const QuadQuality q = quad_quality(mesh, nullptr);
+  return {q.euler_characteristic, q.boundary_loops};
 }
 
 /// Drops points no quad uses (corners of dropped cells).
@@ -128,9 +86,10 @@ QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, con
   Stages stages(r.timings, progress);
 
   const double area = surface_area(soup);
+  const double diagonal = bounding_box_diagonal(soup.points, soup.triangles);
   r.size_requested = options.size > 0            ? options.size
-                     : options.size_relative > 0 ? options.size_relative * bounding_diagonal(soup)
-                                                 : bounding_diagonal(soup) / 60.0;
+                     : options.size_relative > 0 ? options.size_relative * diagonal
+                                                 : diagonal / 60.0;
   const double requested_size =
       options.quads > 0 ? std::sqrt(area / static_cast<double>(options.quads)) : r.size_requested;
   if (surface_adjacency(soup).boundary_loops.empty())
@@ -196,32 +155,31 @@ QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, con
     }
 
     // scale: quads ~ area / size^2 = s^2 sum |h|^2 dA
+    FaceMap target;
     r.expected_quads = options.quads > 0 ? static_cast<double>(options.quads)
                                          : area / (r.size_requested * r.size_requested);
     r.scale = std::sqrt(r.expected_quads / image_area_sum(h));
     {
+      // S as it is until the cone stars are refined
+      const SurfaceAdjacency input = surface_adjacency(soup);
       // at least 4 quad edges on every boundary loop
-      SurfaceAdjacency adjacency = surface_adjacency(soup);
-      for (const auto& loop : adjacency.boundary_loops) {
+      for (const auto& loop : input.boundary_loops) {
         double variation = 0;
         for (std::size_t i = 0; i < loop.size(); ++i)
-          variation += std::abs(edge_value(soup, adjacency, h, loop[i], loop[(i + 1) % loop.size()]).real());
+          variation += std::abs(edge_value(input, h, loop[i], loop[(i + 1) % loop.size()]).real());
         if (variation > 0 && r.scale * variation < 4.5) r.scale = 4.5 / variation;
       }
-    }
-    r.size = std::sqrt(area / (r.scale * r.scale * image_area_sum(h)));
-    FaceMap target = scaled(h, r.scale);
+      r.size = std::sqrt(area / (r.scale * r.scale * image_area_sum(h)));
+      target = scaled(h, r.scale);
 
-    stages.next("zeros", "placing the zeros at vertices");
-    {
-      const SurfaceAdjacency adjacency = surface_adjacency(soup);
-      r.zeros = map_zeros(soup, adjacency, target);
+      stages.next("zeros", "placing the zeros at vertices");
+      r.zeros = map_zeros(soup, input, target);
+      for (const MapZero& z : r.zeros.zeros)
+        if (z.order > 0 && z.representative >= 0) r.zero_vertices.push_back({z.representative, z.order, z.on_boundary});
+      r.zero_vertices = merge_close_zeros(soup, input, target, r.zero_vertices, 1.0);
+      for (const ZeroVertex& c : boundary_corners(soup, input, options.corner_angle_deg, r.size, r.zero_vertices))
+        r.zero_vertices.push_back(c);
     }
-    for (const MapZero& z : r.zeros.zeros)
-      if (z.order > 0 && z.representative >= 0) r.zero_vertices.push_back({z.representative, z.order, z.on_boundary});
-    r.zero_vertices = merge_close_zeros(soup, target, r.zero_vertices, 1.0);
-    for (const ZeroVertex& c : boundary_corners(soup, options.corner_angle_deg, r.size, r.zero_vertices))
-      r.zero_vertices.push_back(c);
     {
       std::vector<FaceMap*> maps{&target};
       for (FaceMap& b : basis) maps.push_back(&b);
@@ -269,27 +227,31 @@ QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, con
     r.surface = std::move(soup);
     return r;
   };
-  std::vector<Eigen::VectorXd> candidates{r.coefficients};
-  if (options.coefficients.empty() && options.form < 0) {
+  QuadMeshResult best = attempt(r.coefficients, soup, basis);
+  const bool automatic = options.coefficients.empty() && options.form < 0;
+  PolygonMesh input;
+  if (automatic) {
+    input.points = soup.points;
+    for (const Triangle& t : soup.triangles) input.faces.push_back({t[0], t[1], t[2]});
+  }
+  const std::pair<int, int> input_topology = automatic ? topology_of(input) : std::pair<int, int>{};
+  if (automatic && topology_of(polygon_mesh(best.quads)) != input_topology) {
     // the basis forms, most uniform first
     std::vector<std::pair<double, int>> order;
     for (int k = 0; k < G; ++k) order.push_back({uniformity_ratio(soup, basis, Eigen::VectorXd::Unit(G, k)), k});
     std::sort(order.begin(), order.end());
-    for (const auto& [ratio, k] : order) candidates.push_back(Eigen::VectorXd::Unit(G, k));
-  }
-  const std::pair<long, int> input_topology = soup_topology(soup);
-  QuadMeshResult best;
-  for (std::size_t i = 0; i < candidates.size(); ++i) {
-    if (i > 0)
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      const int k = order[i].second;
       stages.next("form_choice", fmt::format("the quads do not keep the input's topology: trying symmetric "
-                                             "basis form {} ({} of {})", candidates[i].maxCoeff() > 0.5
-                                                 ? static_cast<int>(std::max_element(candidates[i].data(), candidates[i].data() + G) - candidates[i].data()) + 1
-                                                 : 0, i, G));
-    QuadMeshResult a = attempt(candidates[i], soup, basis);
-    a.form_attempts = static_cast<int>(i + 1);
-    const bool conforming = quad_topology(a.quads) == input_topology;
-    if (i == 0 || conforming) best = std::move(a);
-    if (conforming) break;
+                                             "basis form {} ({} of {})", k + 1, i + 1, G));
+      QuadMeshResult a = attempt(Eigen::VectorXd::Unit(G, k), soup, basis);
+      a.form_attempts = static_cast<int>(i + 2);
+      best.form_attempts = a.form_attempts;
+      if (topology_of(polygon_mesh(a.quads)) == input_topology) {
+        best = std::move(a);
+        break;
+      }
+    }
   }
   stages.close();
   best.timings = r.timings;

@@ -18,13 +18,6 @@ using namespace qm;
 
 namespace {
 
-PolygonMesh polygon_mesh(const LatticeQuads& q) {
-  PolygonMesh m;
-  m.points = q.points;
-  for (const auto& quad : q.quads) m.faces.push_back({quad[0], quad[1], quad[2], quad[3]});
-  return m;
-}
-
 double distance_to_integer(double x) { return std::abs(x - std::round(x)); }
 
 /// Valence (number of quads) of every quad-mesh point.

@@ -94,10 +94,7 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
                       double seconds) {
   MeshSummary s;
   s.input = options.input;
-  PolygonMesh mesh;
-  mesh.points = result.quads.points;
-  for (const auto& quad : result.quads.quads) mesh.faces.push_back({quad[0], quad[1], quad[2], quad[3]});
-  s.quality = quad_quality(mesh, &in.surface.soup);
+  s.quality = quad_quality(polygon_mesh(result.quads), &in.surface.soup);
   for (const ZeroVertex& z : result.zero_vertices)
     if (!z.corner) (z.on_boundary ? s.expected_irregular_boundary : s.expected_irregular_interior)++;
   s.input_euler_characteristic = static_cast<int>(in.surface.report.euler_characteristic);
