@@ -1,6 +1,7 @@
 #include "tools/compare/comparison_report.h"
 
 #include "tools/compare/histogram_svg.h"
+#include "tools/common/quality_json.h"
 
 #include <fmt/format.h>
 
@@ -15,10 +16,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-Json number(double x) {
-  return std::isfinite(x) ? Json(x) : Json(nullptr);
-}
 
 enum class Better { none, lower, higher, input };
 
@@ -132,20 +129,13 @@ Json report_json(const ComparisonReport& r) {
     m["description"] = run.method.description;
     m["mesh"] = run.quality ? Json(run.method.mesh_file) : Json(nullptr);
     if (run.quality) {
-      const QuadQuality& q = *run.quality;
+      // the keys, taken from the one quality JSON (irregular_vertices: interior)
+      const Json all = quality_json(*run.quality);
       Json quality;
-      quality["quads"] = q.quads;
-      quality["triangles"] = q.triangles;
-      quality["inverted"] = q.inverted;
-      quality["min_scaled_jacobian"] = number(q.min_scaled_jacobian);
-      quality["mean_scaled_jacobian"] = number(q.mean_scaled_jacobian);
-      quality["angle_dev_mean"] = number(q.angle_dev_mean);
-      quality["angle_dev_p99"] = number(q.angle_dev_p99);
-      quality["irregular_vertices"] = q.irregular_interior;
-      quality["boundary_loops"] = q.boundary_loops;
-      quality["euler_characteristic"] = q.euler_characteristic;
-      quality["hausdorff_rel"] = number(q.hausdorff_rel);
-      quality["edge_length_mean"] = number(q.edge_length_mean);
+      for (const char* key : {"quads", "triangles", "inverted", "min_scaled_jacobian", "mean_scaled_jacobian",
+                              "angle_dev_mean", "angle_dev_p99", "irregular_vertices", "boundary_loops",
+                              "euler_characteristic", "hausdorff_rel", "edge_length_mean"})
+        quality[key] = all[std::string(key) == "irregular_vertices" ? "irregular_interior" : key];
       m["quality"] = std::move(quality);
     } else {
       m["quality"] = nullptr;

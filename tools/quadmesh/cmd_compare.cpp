@@ -14,6 +14,7 @@
 #include "tools/compare/child_process.h"
 #include "tools/compare/comparison_report.h"
 #include "tools/compare/methods.h"
+#include "libquadmesh/quality/hausdorff.h"
 #include "tools/quadmesh/commands.h"
 
 #include <fmt/format.h>
@@ -30,16 +31,6 @@ namespace qm::tools {
 namespace {
 
 namespace fs = std::filesystem;
-
-double bounding_box_diagonal(const TriangleSoup& soup) {
-  if (soup.points.empty()) return 0.0;
-  Vec3 lo = soup.points.front(), hi = lo;
-  for (const Vec3& p : soup.points) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  return (hi - lo).norm();
-}
 
 /// The methods named in QUADMESH_COMPARE_CRASH (comma-separated).
 bool crash_requested(const std::string& name) {
@@ -148,7 +139,7 @@ int run_compare(const CompareOptions& options, const CommonOptions& common) {
   read.quad_size = options.size;
   read.quad_size_relative = options.size_relative;
   InputSurface in = load_input_surface(input.string(), read, common.largest_component, progress);
-  double diagonal = bounding_box_diagonal(in.surface.soup);
+  double diagonal = bounding_box_diagonal(in.surface.soup.points, in.surface.soup.triangles);
   const double size = options.size > 0            ? options.size
                       : options.size_relative > 0 ? options.size_relative * diagonal
                                                   : diagonal / 60.0;
@@ -158,7 +149,7 @@ int run_compare(const CompareOptions& options, const CommonOptions& common) {
     // absolute size every method gets, so the reference is our method's input.
     read.quad_size = size;
     in = load_input_surface(input.string(), read, common.largest_component, progress);
-    diagonal = bounding_box_diagonal(in.surface.soup);
+    diagonal = bounding_box_diagonal(in.surface.soup.points, in.surface.soup.triangles);
   }
   const TriangleSoup& reference = in.surface.soup;
   std::error_code ec;
