@@ -79,6 +79,67 @@ void compact(LatticeQuads& q) {
   q = std::move(out);
 }
 
+double min_scaled_jacobian(const LatticeQuads& quads) {
+  return quad_quality(polygon_mesh(quads), nullptr).min_scaled_jacobian;
+}
+
+/// Size adaptivity: splits chords where the quads deviate from S by more than the
+/// tolerance (deviation_refinement.h), at most 10% above the target count. When
+/// that is not enough, coarser base lattices (`rerun(density)`: the same attempt
+/// with density x the target count) are tried and the best kept; whatever is left
+/// of the budget goes on to the largest deviations, so the count stays near the
+/// target.
+template <typename Rerun>
+void refine_where_deviating(QuadMeshResult& best, const QuadMeshOptions& options, double diagonal,
+                            Stages& stages, const Rerun& rerun) {
+  const double tolerance = options.max_deviation_relative > 0 ? options.max_deviation_relative * diagonal
+                           : options.max_deviation > 0        ? options.max_deviation
+                                                              : 0.5 * best.size;
+  const auto cap = static_cast<std::size_t>(1.1 * best.expected_quads);
+  const auto floor = static_cast<std::size_t>(0.95 * best.expected_quads);
+  auto refine = [&](QuadMeshResult& a) {
+    const SurfaceAdjacency adjacency = surface_adjacency(a.surface);
+    a.max_deviation = tolerance;
+    a.refinement = refine_to_deviation(a.surface, adjacency, a.quads, a.boundary_loop_of_point, {tolerance, cap});
+    while (a.quads.quads.size() < floor) {  // the rest of the budget: the largest deviations
+      const DeviationRefinementReport more = refine_to_deviation(
+          a.surface, adjacency, a.quads, a.boundary_loop_of_point,
+          {0.8 * a.refinement.deviation_after, floor, 1});
+      if (more.quads_added == 0) break;
+      a.refinement.chords_split += more.chords_split;
+      a.refinement.quads_added += more.quads_added;
+      a.refinement.rounds += more.rounds;
+      a.refinement.deviation_after = more.deviation_after;
+    }
+  };
+  stages.next("refinement", fmt::format("splitting chords where the quads are farther than {:.4g} from the surface",
+                                         tolerance));
+  refine(best);
+  const std::pair<int, int> topology = topology_of(polygon_mesh(best.quads));
+  for (double density : {0.75, 0.55}) {
+    // more budget helps only where the deviation comes from the size: splitting
+    // helped, and the extraction was clean (no fold left, no cell dropped)
+    const ExtractionReport& x = best.extraction;
+    if (best.refinement.tolerance_met ||
+        best.refinement.deviation_after > 0.95 * best.refinement.deviation_before ||
+        x.bad_triangles + x.incomplete_cells + x.degenerate_cells > 0)
+      break;
+    stages.next("refinement", fmt::format("largest deviation {:.4g}: a coarser base lattice ({:.0f}% of the quads) "
+                                           "to pay for more refinement",
+                                           best.refinement.deviation_after, 100 * density));
+    QuadMeshResult a = rerun(density);
+    if (a.quads.quads.empty() || topology_of(polygon_mesh(a.quads)) != topology) continue;
+    refine(a);
+    // geometric fidelity is not bought with element shape: a coarser base is kept
+    // only if its worst quad stays as good (or at least at the usual 0.3 floor)
+    if (a.refinement.deviation_after < best.refinement.deviation_after &&
+        min_scaled_jacobian(a.quads) >= std::min(min_scaled_jacobian(best.quads), 0.3)) {
+      a.form_attempts = best.form_attempts;
+      best = std::move(a);
+    }
+  }
+}
+
 }  // namespace
 
 QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, const ProgressCallback& progress) {
@@ -144,7 +205,8 @@ QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, con
   // (the forms are computed once; an attempt costs a fraction of them) and the first
   // that keeps them is used.
   const QuadMeshResult preamble = r;
-  auto attempt = [&](const Eigen::VectorXd& coefficients, TriangleSoup soup, std::vector<FaceMap> basis) {
+  auto attempt = [&](const Eigen::VectorXd& coefficients, TriangleSoup soup, std::vector<FaceMap> basis,
+                     double density = 1.0) {
     QuadMeshResult r = preamble;
     r.coefficients = coefficients;
     r.uniformity = uniformity_ratio(soup, basis, r.coefficients);
@@ -158,7 +220,8 @@ QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, con
     FaceMap target;
     r.expected_quads = options.quads > 0 ? static_cast<double>(options.quads)
                                          : area / (r.size_requested * r.size_requested);
-    r.scale = std::sqrt(r.expected_quads / image_area_sum(h));
+    r.base_density = density;
+    r.scale = std::sqrt(density * r.expected_quads / image_area_sum(h));
     {
       // S as it is until the cone stars are refined
       const SurfaceAdjacency input = surface_adjacency(soup);
@@ -253,6 +316,9 @@ QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, con
       }
     }
   }
+  if (options.max_deviation >= 0 && !best.quads.quads.empty()) refine_where_deviating(best, options, diagonal, stages, [&](double density) {
+    return attempt(best.coefficients, soup, basis, density);
+  });
   stages.close();
   best.timings = r.timings;
   return best;

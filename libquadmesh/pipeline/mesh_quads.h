@@ -3,6 +3,7 @@
 // quantization, extraction. Tools add reading, writing and reporting around it.
 #pragma once
 
+#include "libquadmesh/extract/deviation_refinement.h"
 #include "libquadmesh/extract/lattice_quads.h"
 #include "libquadmesh/forms/symmetric_forms.h"
 #include "libquadmesh/param/map_zeros.h"
@@ -36,6 +37,12 @@ struct QuadMeshOptions {
   double size_relative = 0.0;  ///< target edge length as a fraction of the bounding-box diagonal
   std::size_t quads = 0;    ///< target quad count; wins over size when not 0
   double corner_angle_deg = 30.0;
+  /// Size adaptivity (extract/deviation_refinement.h): chords are split where the
+  /// quads deviate from S by more than this distance. 0: half the target size;
+  /// < 0: off. The quad count stays within 10% above the target: when the
+  /// refinement needs more, the base lattice is made coarser to pay for it.
+  double max_deviation = 0.0;
+  double max_deviation_relative = 0.0;  ///< the same as a fraction of the bounding-box diagonal (wins when > 0)
 };
 
 struct QuadMeshResult {
@@ -59,6 +66,9 @@ struct QuadMeshResult {
   Quantization quantization;     ///< with the parameterization (after untangling)
   UntangleReport untangle;       ///< the local repair of folds left by the quantization
   ExtractionReport extraction;
+  double base_density = 1.0;     ///< the base lattice's quad count as a fraction of the target (< 1: coarsened)
+  double max_deviation = 0.0;    ///< the tolerance used (0: refinement off)
+  DeviationRefinementReport refinement;
   std::vector<std::pair<std::string, double>> timings;  ///< seconds per stage
 };
 

@@ -6,6 +6,7 @@
 #include "libquadmesh/param/form_choice.h"
 #include "libquadmesh/param/surface_forms.h"
 #include "libquadmesh/pipeline/mesh_quads.h"
+#include "libquadmesh/quality/hausdorff.h"
 #include "libquadmesh/quality/quad_quality.h"
 #include "libquadmesh/topology/topology_report.h"
 #include "tests/support/test_meshes.h"
@@ -115,6 +116,38 @@ TEST_CASE("kitten with two holes: genus 1, two zeros of order 1") {
   const QuadMeshResult r = mesh_quads(input, options);
   check_result(input, r, -2, 2);
   CHECK(r.zeros.doubled_order_sum == 4);
+}
+
+TEST_CASE("aqua-center: splitting chords brings the quads within the tolerance, singular vertices unchanged") {
+  io::ReadOptions read;
+  const TriangleSoup input = analyze_topology(io::read_surface(test::shared_mesh("aqua-center.off"), read).soup).soup;
+  const double diagonal = bounding_box_diagonal(input.points, input.triangles);
+  QuadMeshOptions options;
+  options.size_relative = 0.015;
+  options.max_deviation = -1;  // off
+  const QuadMeshResult plain = mesh_quads(input, options);
+  check_result(input, plain, -1, 3);
+  const QuadQuality q0 = quad_quality(polygon_mesh(plain.quads), &input);
+  // the conformal size: near the rounded ends of the roof the quads are several
+  // times the requested size and cut across the surface
+  CHECK(q0.hausdorff_rel > 0.02);
+  CHECK(plain.refinement.chords_split == 0);
+
+  options.max_deviation = 0;  // default: half the size
+  const QuadMeshResult r = mesh_quads(input, options);
+  check_result(input, r, -1, 3);
+  const QuadQuality q = quad_quality(polygon_mesh(r.quads), &input);
+  // half the target size (r.size is the base lattice's, coarser by 1 / sqrt(base_density))
+  CHECK(r.max_deviation == doctest::Approx(0.5 * r.size * std::sqrt(r.base_density)));
+  CHECK(r.refinement.chords_split > 0);
+  CHECK(r.refinement.tolerance_met);
+  CHECK(r.refinement.deviation_after <= r.max_deviation);
+  // the estimate agrees with the quality module's two-sided Hausdorff distance
+  CHECK(q.hausdorff_rel * diagonal == doctest::Approx(r.refinement.deviation_after).epsilon(0.1));
+  CHECK(q.hausdorff_rel < 0.01);
+  // the quad count stays within 15% of the target
+  CHECK(std::abs(static_cast<double>(q.quads) - r.expected_quads) <= 0.15 * r.expected_quads);
+  CHECK(q.irregular_interior == q0.irregular_interior);
 }
 
 TEST_CASE("--form, --coeffs and --rotate choose the differential") {

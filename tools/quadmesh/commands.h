@@ -29,6 +29,8 @@ struct MeshOptions {
   std::vector<double> coefficients;  ///< --coeffs
   bool rotate = false;
   double corner_angle_deg = 30.0;
+  double max_deviation = 0.0;           ///< --max-deviation D; 0: half the size; < 0: off
+  double max_deviation_relative = 0.0;  ///< --max-deviation P%: P/100 of the diagonal
   double msh_version = 4.1;
 };
 

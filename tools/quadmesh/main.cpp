@@ -94,6 +94,11 @@ int run(int argc, char** argv) {
   mesh_cmd->add_option("--corner-angle", mesh.corner_angle_deg,
                        "Boundary turning angle (degrees) above which a vertex is a corner put on the grid")
       ->check(CLI::Range(0.0, 180.0));
+  std::string deviation_text;
+  mesh_cmd->add_option("--max-deviation", deviation_text,
+                       "Split quad strips where the quads are farther than D (or P% of the diagonal) from "
+                       "the input; off: no refinement (default: half the quad size)")
+      ->check([](const std::string& v) { return v == "off" || size_or_percent(v).empty() ? std::string() : std::string("must be off, a positive length or a percentage such as 0.5%"); });
   mesh_cmd->add_option("--report", mesh.report, "Write a JSON report (quality, zeros, quantization, timings)");
   mesh_cmd->add_option("--msh-version", mesh.msh_version, "MSH output version: 4.1 or 2.2")
       ->check(CLI::IsMember({4.1, 2.2}));
@@ -158,6 +163,12 @@ int run(int argc, char** argv) {
     else
       mesh.size = std::stod(size_text);
   }
+  if (deviation_text == "off")
+    mesh.max_deviation = -1;
+  else if (!deviation_text.empty() && deviation_text.back() == '%')
+    mesh.max_deviation_relative = std::stod(deviation_text) / 100.0;
+  else if (!deviation_text.empty())
+    mesh.max_deviation = std::stod(deviation_text);
   return run_mesh(mesh, common);
 }
 

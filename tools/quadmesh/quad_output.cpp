@@ -150,8 +150,18 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
                      {"seam_mismatches", x.seam_mismatches},
                      {"chords_split", result.chords_split},
                      {"zero_star_splits", result.star_splits}};
-  Json timings = Json::object();
-  for (const auto& [stage, t] : result.timings) timings[stage] = t;
+  const DeviationRefinementReport& rf = result.refinement;
+  j["refinement"] = {{"enabled", result.max_deviation > 0},
+                     {"max_deviation", result.max_deviation},
+                     {"base_density", result.base_density},
+                     {"deviation_before", rf.deviation_before},
+                     {"deviation_after", rf.deviation_after},
+                     {"tolerance_met", rf.tolerance_met},
+                     {"chords_split", rf.chords_split},
+                     {"quads_added", rf.quads_added},
+                     {"rounds", rf.rounds}};
+  Json timings = Json::object();  // a stage run more than once (another form, a coarser base) adds up
+  for (const auto& [stage, t] : result.timings) timings[stage] = timings.value(stage, 0.0) + t;
   timings["total"] = seconds;
   j["timings"] = timings;
   s.report = std::move(j);
@@ -170,6 +180,13 @@ void print_summary(const MeshSummary& s) {
              s.input_euler_characteristic, q.boundary_loops, s.input_boundary_loops);
   fmt::print("Hausdorff distance  {:.3g} of the diagonal\n", q.hausdorff_rel);
   fmt::print("quantization        distortion {:.3g}\n", s.report["quantization"]["distortion"].get<double>());
+  const Json& rf = s.report["refinement"];
+  if (rf["enabled"].get<bool>())
+    fmt::print("refinement          {} chords split (+{} quads, base lattice {:.0f}% of the target), deviation "
+               "{:.3g} -> {:.3g} (tolerance {:.3g})\n",
+               rf["chords_split"].get<std::size_t>(), rf["quads_added"].get<std::size_t>(),
+               100 * rf["base_density"].get<double>(), rf["deviation_before"].get<double>(),
+               rf["deviation_after"].get<double>(), rf["max_deviation"].get<double>());
   fmt::print("time                {:.2f} s\n", s.seconds);
 }
 

@@ -1,0 +1,273 @@
+#include "libquadmesh/extract/deviation_refinement.h"
+
+#include "libquadmesh/core/error.h"
+#include "libquadmesh/extract/quad_chords.h"
+#include "libquadmesh/quality/hausdorff.h"
+
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <numeric>
+
+namespace qm {
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Triangle3 = K::Triangle_3;
+using Segment3 = K::Segment_3;
+using TrianglePrimitive = CGAL::AABB_triangle_primitive<K, std::vector<Triangle3>::const_iterator>;
+using TriangleTree = CGAL::AABB_tree<CGAL::AABB_traits<K, TrianglePrimitive>>;
+using SegmentPrimitive = CGAL::AABB_segment_primitive<K, std::vector<Segment3>::const_iterator>;
+using SegmentTree = CGAL::AABB_tree<CGAL::AABB_traits<K, SegmentPrimitive>>;
+
+K::Point_3 cgal(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
+Vec3 eigen(const K::Point_3& p) { return {p.x(), p.y(), p.z()}; }
+
+/// Triangles with an AABB tree; ids[k] is the caller's id of triangles[k]
+/// (degenerate triangles are left out).
+struct TriangleIndex {
+  std::vector<Triangle3> triangles;
+  std::vector<int> ids;
+  std::unique_ptr<TriangleTree> tree;
+
+  void add(const Vec3& a, const Vec3& b, const Vec3& c, int id) {
+    Triangle3 t(cgal(a), cgal(b), cgal(c));
+    if (t.is_degenerate()) return;
+    triangles.push_back(t);
+    ids.push_back(id);
+  }
+  void build() {
+    tree = std::make_unique<TriangleTree>(triangles.cbegin(), triangles.cend());
+    tree->accelerate_distance_queries();
+  }
+  /// closest point and the id of its triangle
+  std::pair<Vec3, int> closest(const Vec3& p) const {
+    const auto hit = tree->closest_point_and_primitive(cgal(p));
+    return {eigen(hit.first), ids[static_cast<std::size_t>(hit.second - triangles.cbegin())]};
+  }
+};
+
+TriangleIndex surface_index(const TriangleSoup& s) {
+  TriangleIndex index;
+  for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+    const Triangle& t = s.triangles[f];
+    index.add(s.points[static_cast<std::size_t>(t[0])], s.points[static_cast<std::size_t>(t[1])],
+              s.points[static_cast<std::size_t>(t[2])], static_cast<int>(f));
+  }
+  index.build();
+  return index;
+}
+
+/// the quads' triangles v0v1v2 and v0v2v3, with the quad as id
+TriangleIndex quad_index(const LatticeQuads& q) {
+  TriangleIndex index;
+  for (std::size_t k = 0; k < q.quads.size(); ++k) {
+    const auto& c = q.quads[k];
+    auto p = [&](int i) { return q.points[static_cast<std::size_t>(c[static_cast<std::size_t>(i)])]; };
+    index.add(p(0), p(1), p(2), static_cast<int>(k));
+    index.add(p(0), p(2), p(3), static_cast<int>(k));
+  }
+  index.build();
+  return index;
+}
+
+std::vector<double> deviation(const TriangleIndex& surface, const std::vector<Vec3>& surface_samples,
+                              const LatticeQuads& q) {
+  std::vector<double> out(q.quads.size(), 0.0);
+  if (q.quads.empty()) return out;
+  const TriangleIndex quads = quad_index(q);
+  if (quads.triangles.empty()) return out;
+  for (const Vec3& s : surface_samples) {
+    const auto [p, k] = quads.closest(s);
+    double& d = out[static_cast<std::size_t>(k)];
+    d = std::max(d, (p - s).norm());
+  }
+  for (std::size_t k = 0; k < q.quads.size(); ++k) {
+    const auto& c = q.quads[k];
+    auto p = [&](int i) { return q.points[static_cast<std::size_t>(c[static_cast<std::size_t>(i % 4)])]; };
+    std::vector<Vec3> samples{(p(0) + p(1) + p(2) + p(3)) / 4, (p(0) + p(1) + p(2)) / 3, (p(0) + p(2) + p(3)) / 3};
+    for (int i = 0; i < 4; ++i) samples.push_back((p(i) + p(i + 1)) / 2);
+    for (const Vec3& s : samples) out[k] = std::max(out[k], (surface.closest(s).first - s).norm());
+  }
+  return out;
+}
+
+std::array<double, 3> barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 u = b - a, v = c - a, w = p - a;
+  const double uu = u.dot(u), uv = u.dot(v), vv = v.dot(v), wu = w.dot(u), wv = w.dot(v);
+  const double det = uu * vv - uv * uv;
+  if (det <= 0) return {1.0, 0.0, 0.0};
+  const double y = (vv * wu - uv * wv) / det, z = (uu * wv - uv * wu) / det;
+  return {1 - y - z, y, z};
+}
+
+/// Places new points on S: boundary midpoints on S's boundary, the others on S.
+class Placement {
+ public:
+  Placement(const TriangleSoup& s, const SurfaceAdjacency& adjacency, const TriangleIndex& surface)
+      : s_(s), adjacency_(adjacency), surface_(surface) {
+    for (const auto& loop : adjacency.boundary_loops)
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        const int a = loop[i], b = loop[(i + 1) % loop.size()];
+        segments_.emplace_back(cgal(point(a)), cgal(point(b)));
+        ends_.push_back({a, b});
+      }
+    if (!segments_.empty()) {
+      boundary_ = std::make_unique<SegmentTree>(segments_.cbegin(), segments_.cend());
+      boundary_->accelerate_distance_queries();
+    }
+  }
+
+  std::pair<Vec3, SurfaceLocation> on_surface(const Vec3& guess) const {
+    const auto [p, f] = surface_.closest(guess);
+    const Triangle& t = s_.triangles[static_cast<std::size_t>(f)];
+    SurfaceLocation loc;
+    loc.kind = SurfaceLocation::Kind::face;
+    loc.face = f;
+    loc.barycentric = barycentric(p, point(t[0]), point(t[1]), point(t[2]));
+    return {p, loc};
+  }
+
+  std::pair<Vec3, SurfaceLocation> on_boundary(const Vec3& guess) const {
+    if (!boundary_) return on_surface(guess);
+    const auto hit = boundary_->closest_point_and_primitive(cgal(guess));
+    const auto [a, b] = ends_[static_cast<std::size_t>(hit.second - segments_.cbegin())];
+    const Vec3 p = eigen(hit.first);
+    const Vec3 ab = point(b) - point(a);
+    const double t = std::clamp((p - point(a)).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+    const EdgeCorner e = adjacency_.find(a, b);
+    QM_ASSERT(e.face >= 0);
+    SurfaceLocation loc;
+    loc.face = e.face;
+    loc.barycentric = {0.0, 0.0, 0.0};
+    loc.barycentric[static_cast<std::size_t>(e.i)] = 1 - t;
+    loc.barycentric[static_cast<std::size_t>(e.j)] = t;
+    if (t <= 0 || t >= 1) {
+      loc.kind = SurfaceLocation::Kind::vertex;
+      loc.a = t <= 0 ? a : b;
+    } else {
+      loc.kind = SurfaceLocation::Kind::edge;
+      loc.a = std::min(a, b);
+      loc.b = std::max(a, b);
+    }
+    return {p, loc};
+  }
+
+ private:
+  const Vec3& point(int v) const { return s_.points[static_cast<std::size_t>(v)]; }
+  const TriangleSoup& s_;
+  const SurfaceAdjacency& adjacency_;
+  const TriangleIndex& surface_;
+  std::vector<Segment3> segments_;
+  std::vector<std::pair<int, int>> ends_;
+  std::unique_ptr<SegmentTree> boundary_;
+};
+
+double length(const LatticeQuads& q, const Quad& c, int i) {
+  return (q.points[static_cast<std::size_t>(c[static_cast<std::size_t>(i)])] -
+          q.points[static_cast<std::size_t>(c[static_cast<std::size_t>((i + 1) % 4)])])
+      .norm();
+}
+
+double max_of(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end()); }
+
+}  // namespace
+
+std::vector<double> quad_deviation(const TriangleSoup& surface, const LatticeQuads& quads) {
+  return deviation(surface_index(surface), surface_samples(surface.points, surface.triangles, {2}), quads);
+}
+
+DeviationRefinementReport refine_to_deviation(const TriangleSoup& surface,
+                                              const SurfaceAdjacency& adjacency, LatticeQuads& quads,
+                                              std::vector<int>& boundary_loop_of_point,
+                                              const DeviationRefinementOptions& options) {
+  QM_ASSERT(options.tolerance > 0);
+  QM_ASSERT(boundary_loop_of_point.size() == quads.points.size());
+  DeviationRefinementReport report;
+  const TriangleIndex index = surface_index(surface);
+  const std::vector<Vec3> samples = surface_samples(surface.points, surface.triangles, {2});
+  const Placement placement(surface, adjacency, index);
+  std::vector<double> dev = deviation(index, samples, quads);
+  report.deviation_before = report.deviation_after = max_of(dev);
+  const std::size_t start = quads.quads.size();
+  for (int round = 0; round < options.max_rounds; ++round) {
+    // the worst quads first: the largest deviation is what the budget must bring down
+    const double threshold = std::max(options.tolerance, 0.75 * max_of(dev));
+    std::vector<int> worst;
+    for (std::size_t k = 0; k < dev.size(); ++k)
+      if (dev[k] > threshold) worst.push_back(static_cast<int>(k));
+    if (worst.empty()) break;
+    std::sort(worst.begin(), worst.end(), [&](int a, int b) { return dev[static_cast<std::size_t>(a)] > dev[static_cast<std::size_t>(b)]; });
+    const QuadChords chords = quad_chords(quads.quads);
+    std::vector<char> split(chords.length.size(), 0);
+    std::size_t planned = 0, chosen = 0;
+    const std::size_t budget = options.max_quads > quads.quads.size() ? options.max_quads - quads.quads.size() : 0;
+    for (int k : worst) {
+      const Quad& c = quads.quads[static_cast<std::size_t>(k)];
+      // cut the long edges: direction 0 cuts edges 0 and 2
+      const double l0 = length(quads, c, 0) + length(quads, c, 2);
+      const double l1 = length(quads, c, 1) + length(quads, c, 3);
+      // a near-square quad: the shorter chord first (both halve the quad)
+      const auto& of = chords.chord_of[static_cast<std::size_t>(k)];
+      int first = l0 >= l1 ? 0 : 1;
+      const bool square = std::min(l0, l1) > 0.7 * std::max(l0, l1);
+      if (square && chords.length[static_cast<std::size_t>(of[1 - first])] < chords.length[static_cast<std::size_t>(of[first])])
+        first = 1 - first;
+      std::vector<int> directions{first};
+      if (square) directions.push_back(1 - first);
+      for (int d : directions) {
+        const int chord = chords.chord_of[static_cast<std::size_t>(k)][static_cast<std::size_t>(d)];
+        const std::size_t cost = static_cast<std::size_t>(chords.length[static_cast<std::size_t>(chord)]);
+        if (split[static_cast<std::size_t>(chord)] || planned + cost > budget) continue;
+        split[static_cast<std::size_t>(chord)] = 1;
+        planned += cost;
+        ++chosen;
+      }
+    }
+    if (chosen == 0) break;
+    const int n = static_cast<int>(quads.points.size());
+    const std::vector<Quad> before = quads.quads;
+    SplitQuads out = split_chords(before, n, chords, split);
+    for (const SplitPoint& sp : out.new_points) {
+      if (sp.quad >= 0) {
+        Vec3 centre = Vec3::Zero();
+        for (int v : before[static_cast<std::size_t>(sp.quad)]) centre += quads.points[static_cast<std::size_t>(v)];
+        const auto [p, loc] = placement.on_surface(centre / 4);
+        quads.points.push_back(p);
+        quads.locations.push_back(loc);
+        boundary_loop_of_point.push_back(-1);
+        continue;
+      }
+      const Vec3 middle = (quads.points[static_cast<std::size_t>(sp.a)] + quads.points[static_cast<std::size_t>(sp.b)]) / 2;
+      // an edge on the quads' boundary lies on S's boundary unless it borders a dropped cell
+      const bool on_boundary = sp.boundary && boundary_loop_of_point[static_cast<std::size_t>(sp.a)] >= 0 &&
+                               boundary_loop_of_point[static_cast<std::size_t>(sp.b)] >= 0;
+      const auto [p, loc] = on_boundary ? placement.on_boundary(middle) : placement.on_surface(middle);
+      quads.points.push_back(p);
+      quads.locations.push_back(loc);
+      int loop = -1;
+      if (on_boundary) {
+        loop = boundary_loop_of_point[static_cast<std::size_t>(sp.a)];
+        if (loop < 0) loop = boundary_loop_of_point[static_cast<std::size_t>(sp.b)];
+      }
+      boundary_loop_of_point.push_back(loop);
+    }
+    quads.quads = std::move(out.quads);
+    report.chords_split += chosen;
+    ++report.rounds;
+    dev = deviation(index, samples, quads);
+    report.deviation_after = max_of(dev);
+  }
+  report.tolerance_met = report.deviation_after <= options.tolerance;
+  report.quads_added = quads.quads.size() - start;
+  return report;
+}
+
+}  // namespace qm

@@ -1,0 +1,50 @@
+// Size adaptivity without new singularities (beyond the method): the quad size of
+// a conformal parameterization is 1 / (s |h|), and |h| is small on protrusions and
+// near rounded convex turns of the boundary, where the quads become several times
+// the requested size and cut across the surface. Where the quads deviate from S by
+// more than a tolerance, the chords (quad_chords.h) through the worst quads are
+// split, within a quad budget. Splitting adds only regular vertices, so the
+// singular vertices stay exactly the zeros; new points are placed on S (on its
+// boundary for boundary edges) by closest-point projection.
+#pragma once
+
+#include "libquadmesh/core/triangle_soup.h"
+#include "libquadmesh/extract/lattice_quads.h"
+#include "libquadmesh/param/surface_adjacency.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace qm {
+
+struct DeviationRefinementOptions {
+  double tolerance = 0;         ///< largest distance allowed between the quads and S (absolute; > 0)
+  std::size_t max_quads = 0;    ///< no split that would take the quad count above this
+  int max_rounds = 40;
+};
+
+struct DeviationRefinementReport {
+  double deviation_before = 0;  ///< estimated max distance between the quads and S, before
+  double deviation_after = 0;   ///< and after
+  std::size_t chords_split = 0;
+  std::size_t quads_added = 0;
+  int rounds = 0;
+  bool tolerance_met = false;
+};
+
+/// Per quad, the estimated deviation: the largest distance from a sample of the quad
+/// (its two triangles split along the diagonal v0v2, as in the quality module) to S,
+/// and from a sample of S (vertices, edge midpoints, centroids) whose nearest quad
+/// it is to that quad.
+std::vector<double> quad_deviation(const TriangleSoup& surface, const LatticeQuads& quads);
+
+/// Splits chords until every quad's deviation is within options.tolerance, the
+/// budget is spent, or a round brings nothing. `boundary_loop_of_point` (per quad
+/// point, the boundary loop or -1) is extended for the new points; the new points'
+/// locations refer to `surface`.
+DeviationRefinementReport refine_to_deviation(const TriangleSoup& surface,
+                                              const SurfaceAdjacency& adjacency, LatticeQuads& quads,
+                                              std::vector<int>& boundary_loop_of_point,
+                                              const DeviationRefinementOptions& options);
+
+}  // namespace qm
