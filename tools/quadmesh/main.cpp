@@ -26,6 +26,16 @@ std::string size_or_percent(const std::string& v) {
   return std::string("must be a positive length or a percentage such as 1.5%");
 }
 
+/// Stores a validated `size_or_percent` text: a length in `absolute`, or P% as P/100
+/// in `relative`; an empty text leaves both as they are.
+void set_length_or_percent(const std::string& text, double& absolute, double& relative) {
+  if (text.empty()) return;
+  if (text.back() == '%')
+    relative = std::stod(text) / 100.0;
+  else
+    absolute = std::stod(text);
+}
+
 void print_error(const std::string& message) {
   fmt::print(stderr, "quadmesh: error: {}\n", message);
 }
@@ -148,27 +158,15 @@ int run(int argc, char** argv) {
   if (forms_cmd->parsed()) return run_forms(forms, common);
   if (quality_cmd->parsed()) return run_quality(quality, common);
   if (compare_cmd->parsed()) {
-    if (!compare_size.empty()) {
-      if (compare_size.back() == '%')
-        compare.size_relative = std::stod(compare_size) / 100.0;
-      else
-        compare.size = std::stod(compare_size);
-    }
+    set_length_or_percent(compare_size, compare.size, compare.size_relative);
     return run_compare(compare, common);
   }
   if (form_choice != "auto") mesh.form = std::stoi(form_choice) - 1;
-  if (!size_text.empty()) {
-    if (size_text.back() == '%')
-      mesh.size_relative = std::stod(size_text) / 100.0;
-    else
-      mesh.size = std::stod(size_text);
-  }
+  set_length_or_percent(size_text, mesh.size, mesh.size_relative);
   if (deviation_text == "off")
     mesh.max_deviation = -1;
-  else if (!deviation_text.empty() && deviation_text.back() == '%')
-    mesh.max_deviation_relative = std::stod(deviation_text) / 100.0;
-  else if (!deviation_text.empty())
-    mesh.max_deviation = std::stod(deviation_text);
+  else
+    set_length_or_percent(deviation_text, mesh.max_deviation, mesh.max_deviation_relative);
   return run_mesh(mesh, common);
 }
 
