@@ -184,6 +184,75 @@ std::vector<double> quad_deviation(const TriangleSoup& surface, const LatticeQua
   return deviation(surface_index(surface), surface_samples(surface.points, surface.triangles, {2}), quads);
 }
 
+namespace {
+
+/// One round: splits the chords through the quads whose deviation exceeds
+/// `threshold`, worst first, as long as the quad count stays within `max_quads`;
+/// places the new points and updates `dev`. Returns the number of chords split.
+std::size_t split_round(const Placement& placement, const TriangleIndex& index, const std::vector<Vec3>& samples,
+                        LatticeQuads& quads, std::vector<int>& boundary_loop_of_point, std::vector<double>& dev,
+                        double threshold, std::size_t max_quads) {
+  std::vector<int> worst;
+  for (std::size_t k = 0; k < dev.size(); ++k)
+    if (dev[k] > threshold) worst.push_back(static_cast<int>(k));
+  if (worst.empty()) return 0;
+  std::sort(worst.begin(), worst.end(), [&](int a, int b) { return dev[static_cast<std::size_t>(a)] > dev[static_cast<std::size_t>(b)]; });
+  const QuadChords chords = quad_chords(quads.quads);
+  std::vector<char> split(chords.length.size(), 0);
+  std::size_t planned = 0, chosen = 0;
+  const std::size_t budget = max_quads > quads.quads.size() ? max_quads - quads.quads.size() : 0;
+  for (int k : worst) {
+    const Quad& c = quads.quads[static_cast<std::size_t>(k)];
+    // cut the long edges: direction 0 cuts edges 0 and 2
+    const double l0 = length(quads, c, 0) + length(quads, c, 2);
+    const double l1 = length(quads, c, 1) + length(quads, c, 3);
+    // a near-square quad: the shorter chord first (both halve the quad)
+    const auto& of = chords.chord_of[static_cast<std::size_t>(k)];
+    int first = l0 >= l1 ? 0 : 1;
+    const bool square = std::min(l0, l1) > 0.7 * std::max(l0, l1);
+    if (square && chords.length[static_cast<std::size_t>(of[1 - first])] < chords.length[static_cast<std::size_t>(of[first])])
+      first = 1 - first;
+    std::vector<int> directions{first};
+    if (square) directions.push_back(1 - first);
+    for (int d : directions) {
+      const int chord = of[static_cast<std::size_t>(d)];
+      const std::size_t cost = static_cast<std::size_t>(chords.length[static_cast<std::size_t>(chord)]);
+      if (split[static_cast<std::size_t>(chord)] || planned + cost > budget) continue;
+      split[static_cast<std::size_t>(chord)] = 1;
+      planned += cost;
+      ++chosen;
+    }
+  }
+  if (chosen == 0) return 0;
+  const int n = static_cast<int>(quads.points.size());
+  const std::vector<Quad> before = quads.quads;
+  SplitQuads out = split_chords(before, n, chords, split);
+  for (const SplitPoint& sp : out.new_points) {
+    if (sp.quad >= 0) {
+      Vec3 centre = Vec3::Zero();
+      for (int v : before[static_cast<std::size_t>(sp.quad)]) centre += quads.points[static_cast<std::size_t>(v)];
+      const auto [p, loc] = placement.on_surface(centre / 4);
+      quads.points.push_back(p);
+      quads.locations.push_back(loc);
+      boundary_loop_of_point.push_back(-1);
+      continue;
+    }
+    const Vec3 middle = (quads.points[static_cast<std::size_t>(sp.a)] + quads.points[static_cast<std::size_t>(sp.b)]) / 2;
+    // an edge on the quads' boundary lies on S's boundary unless it borders a dropped cell
+    const int loop = boundary_loop_of_point[static_cast<std::size_t>(sp.a)];
+    const bool on_boundary = sp.boundary && loop >= 0 && boundary_loop_of_point[static_cast<std::size_t>(sp.b)] >= 0;
+    const auto [p, loc] = on_boundary ? placement.on_boundary(middle) : placement.on_surface(middle);
+    quads.points.push_back(p);
+    quads.locations.push_back(loc);
+    boundary_loop_of_point.push_back(on_boundary ? loop : -1);
+  }
+  quads.quads = std::move(out.quads);
+  dev = deviation(index, samples, quads);
+  return chosen;
+}
+
+}  // namespace
+
 DeviationRefinementReport refine_to_deviation(const TriangleSoup& surface,
                                               const SurfaceAdjacency& adjacency, LatticeQuads& quads,
                                               std::vector<int>& boundary_loop_of_point,
@@ -195,77 +264,23 @@ DeviationRefinementReport refine_to_deviation(const TriangleSoup& surface,
   const std::vector<Vec3> samples = surface_samples(surface.points, surface.triangles, {2});
   const Placement placement(surface, adjacency, index);
   std::vector<double> dev = deviation(index, samples, quads);
-  report.deviation_before = report.deviation_after = max_of(dev);
+  report.deviation_before = max_of(dev);
   const std::size_t start = quads.quads.size();
-  for (int round = 0; round < options.max_rounds; ++round) {
-    // the worst quads first: the largest deviation is what the budget must bring down
-    const double threshold = std::max(options.tolerance, 0.75 * max_of(dev));
-    std::vector<int> worst;
-    for (std::size_t k = 0; k < dev.size(); ++k)
-      if (dev[k] > threshold) worst.push_back(static_cast<int>(k));
-    if (worst.empty()) break;
-    std::sort(worst.begin(), worst.end(), [&](int a, int b) { return dev[static_cast<std::size_t>(a)] > dev[static_cast<std::size_t>(b)]; });
-    const QuadChords chords = quad_chords(quads.quads);
-    std::vector<char> split(chords.length.size(), 0);
-    std::size_t planned = 0, chosen = 0;
-    const std::size_t budget = options.max_quads > quads.quads.size() ? options.max_quads - quads.quads.size() : 0;
-    for (int k : worst) {
-      const Quad& c = quads.quads[static_cast<std::size_t>(k)];
-      // cut the long edges: direction 0 cuts edges 0 and 2
-      const double l0 = length(quads, c, 0) + length(quads, c, 2);
-      const double l1 = length(quads, c, 1) + length(quads, c, 3);
-      // a near-square quad: the shorter chord first (both halve the quad)
-      const auto& of = chords.chord_of[static_cast<std::size_t>(k)];
-      int first = l0 >= l1 ? 0 : 1;
-      const bool square = std::min(l0, l1) > 0.7 * std::max(l0, l1);
-      if (square && chords.length[static_cast<std::size_t>(of[1 - first])] < chords.length[static_cast<std::size_t>(of[first])])
-        first = 1 - first;
-      std::vector<int> directions{first};
-      if (square) directions.push_back(1 - first);
-      for (int d : directions) {
-        const int chord = chords.chord_of[static_cast<std::size_t>(k)][static_cast<std::size_t>(d)];
-        const std::size_t cost = static_cast<std::size_t>(chords.length[static_cast<std::size_t>(chord)]);
-        if (split[static_cast<std::size_t>(chord)] || planned + cost > budget) continue;
-        split[static_cast<std::size_t>(chord)] = 1;
-        planned += cost;
-        ++chosen;
-      }
-    }
-    if (chosen == 0) break;
-    const int n = static_cast<int>(quads.points.size());
-    const std::vector<Quad> before = quads.quads;
-    SplitQuads out = split_chords(before, n, chords, split);
-    for (const SplitPoint& sp : out.new_points) {
-      if (sp.quad >= 0) {
-        Vec3 centre = Vec3::Zero();
-        for (int v : before[static_cast<std::size_t>(sp.quad)]) centre += quads.points[static_cast<std::size_t>(v)];
-        const auto [p, loc] = placement.on_surface(centre / 4);
-        quads.points.push_back(p);
-        quads.locations.push_back(loc);
-        boundary_loop_of_point.push_back(-1);
-        continue;
-      }
-      const Vec3 middle = (quads.points[static_cast<std::size_t>(sp.a)] + quads.points[static_cast<std::size_t>(sp.b)]) / 2;
-      // an edge on the quads' boundary lies on S's boundary unless it borders a dropped cell
-      const bool on_boundary = sp.boundary && boundary_loop_of_point[static_cast<std::size_t>(sp.a)] >= 0 &&
-                               boundary_loop_of_point[static_cast<std::size_t>(sp.b)] >= 0;
-      const auto [p, loc] = on_boundary ? placement.on_boundary(middle) : placement.on_surface(middle);
-      quads.points.push_back(p);
-      quads.locations.push_back(loc);
-      int loop = -1;
-      if (on_boundary) {
-        loop = boundary_loop_of_point[static_cast<std::size_t>(sp.a)];
-        if (loop < 0) loop = boundary_loop_of_point[static_cast<std::size_t>(sp.b)];
-      }
-      boundary_loop_of_point.push_back(loop);
-    }
-    quads.quads = std::move(out.quads);
+  auto round = [&](double threshold, std::size_t max_quads) {
+    const std::size_t chosen =
+        split_round(placement, index, samples, quads, boundary_loop_of_point, dev, threshold, max_quads);
     report.chords_split += chosen;
-    ++report.rounds;
-    dev = deviation(index, samples, quads);
-    report.deviation_after = max_of(dev);
-  }
-  report.tolerance_met = report.deviation_after <= options.tolerance;
+    report.rounds += chosen > 0;
+    return chosen > 0;
+  };
+  // the worst quads first: the largest deviation is what the budget must bring down
+  for (int r = 0; r < options.max_rounds; ++r)
+    if (!round(std::max(options.tolerance, 0.75 * max_of(dev)), options.max_quads)) break;
+  report.tolerance_met = max_of(dev) <= options.tolerance;
+  // the rest of the budget, up to min_quads: the largest deviations
+  while (quads.quads.size() < options.min_quads)
+    if (!round(0.8 * max_of(dev), options.min_quads)) break;
+  report.deviation_after = max_of(dev);
   report.quads_added = quads.quads.size() - start;
   return report;
 }

@@ -21,6 +21,10 @@ struct DeviationRefinementOptions {
   double tolerance = 0;         ///< largest distance allowed between the quads and S (absolute; > 0)
   std::size_t max_quads = 0;    ///< no split that would take the quad count above this
   int max_rounds = 40;
+  /// Then, while the count is below this, the chords through the quads above 0.8
+  /// of the largest deviation are split (one round at a time, within min_quads):
+  /// what is left of a budget goes to the largest deviations. 0: none.
+  std::size_t min_quads = 0;
 };
 
 struct DeviationRefinementReport {
@@ -29,7 +33,7 @@ struct DeviationRefinementReport {
   std::size_t chords_split = 0;
   std::size_t quads_added = 0;
   int rounds = 0;
-  bool tolerance_met = false;
+  bool tolerance_met = false;   ///< after the rounds within max_quads (before the min_quads rounds)
 };
 
 /// Per quad, the estimated deviation: the largest distance from a sample of the quad
@@ -39,7 +43,7 @@ struct DeviationRefinementReport {
 std::vector<double> quad_deviation(const TriangleSoup& surface, const LatticeQuads& quads);
 
 /// Splits chords until every quad's deviation is within options.tolerance, the
-/// budget is spent, or a round brings nothing. `boundary_loop_of_point` (per quad
+/// budget is spent, or a round brings nothing; then up to options.min_quads. `boundary_loop_of_point` (per quad
 /// point, the boundary loop or -1) is extended for the new points; the new points'
 /// locations refer to `surface`.
 DeviationRefinementReport refine_to_deviation(const TriangleSoup& surface,

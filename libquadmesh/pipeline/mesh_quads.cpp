@@ -95,22 +95,14 @@ void refine_where_deviating(QuadMeshResult& best, const QuadMeshOptions& options
   const double tolerance = options.max_deviation_relative > 0 ? options.max_deviation_relative * diagonal
                            : options.max_deviation > 0        ? options.max_deviation
                                                               : 0.5 * best.size;
-  const auto cap = static_cast<std::size_t>(1.1 * best.expected_quads);
-  const auto floor = static_cast<std::size_t>(0.95 * best.expected_quads);
   auto refine = [&](QuadMeshResult& a) {
-    const SurfaceAdjacency adjacency = surface_adjacency(a.surface);
+    DeviationRefinementOptions refinement;
+    refinement.tolerance = tolerance;
+    refinement.max_quads = static_cast<std::size_t>(1.1 * best.expected_quads);
+    refinement.min_quads = static_cast<std::size_t>(0.95 * best.expected_quads);
     a.max_deviation = tolerance;
-    a.refinement = refine_to_deviation(a.surface, adjacency, a.quads, a.boundary_loop_of_point, {tolerance, cap});
-    while (a.quads.quads.size() < floor) {  // the rest of the budget: the largest deviations
-      const DeviationRefinementReport more = refine_to_deviation(
-          a.surface, adjacency, a.quads, a.boundary_loop_of_point,
-          {0.8 * a.refinement.deviation_after, floor, 1});
-      if (more.quads_added == 0) break;
-      a.refinement.chords_split += more.chords_split;
-      a.refinement.quads_added += more.quads_added;
-      a.refinement.rounds += more.rounds;
-      a.refinement.deviation_after = more.deviation_after;
-    }
+    a.refinement = refine_to_deviation(a.surface, surface_adjacency(a.surface), a.quads, a.boundary_loop_of_point,
+                                       refinement);
   };
   stages.next("refinement", fmt::format("splitting chords where the quads are farther than {:.4g} from the surface",
                                          tolerance));
