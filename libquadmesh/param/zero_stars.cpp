@@ -135,6 +135,27 @@ std::vector<ZeroVertex> merge_close_zeros(const TriangleSoup& soup, const Surfac
   return merged;
 }
 
+std::vector<ZeroVertex> add_corners(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const FaceMap& map,
+                                    std::vector<ZeroVertex> zeros, const std::vector<ZeroVertex>& corners,
+                                    double radius) {
+  for (const ZeroVertex& c : corners) {
+    int nearest = -1;
+    double best = radius;
+    const std::unordered_map<int, double> ball = image_ball(soup, adjacency, map, c.vertex, radius);
+    for (std::size_t i = 0; i < zeros.size(); ++i) {
+      if (!zeros[i].on_boundary || zeros[i].corner) continue;
+      const auto it = ball.find(zeros[i].vertex);
+      if (it != ball.end() && it->second < best) {
+        best = it->second;
+        nearest = static_cast<int>(i);
+      }
+    }
+    if (nearest >= 0) zeros[static_cast<std::size_t>(nearest)].vertex = c.vertex;
+    else zeros.push_back(c);
+  }
+  return zeros;
+}
+
 std::vector<ZeroVertex> boundary_corners(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                                          double corner_angle_deg, double scale,
                                          const std::vector<ZeroVertex>& taken) {

@@ -52,6 +52,14 @@ std::vector<ZeroVertex> boundary_corners(const TriangleSoup& soup, const Surface
                                          const std::vector<ZeroVertex>& taken);
 
 
+/// Adds the sharp boundary `corners` to `zeros`. A boundary zero closer than
+/// `radius` to a corner in the image of `map` could not take a different lattice
+/// point from it: that zero moves onto the corner vertex (the corner is where the
+/// boundary really turns) and the corner is not added separately.
+std::vector<ZeroVertex> add_corners(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const FaceMap& map,
+                                    std::vector<ZeroVertex> zeros, const std::vector<ZeroVertex>& corners,
+                                    double radius);
+
 /// The largest image angle of a triangle corner of a model star, in radians: the
 /// 3D corner angle times image_angle / (3D angle sum at the cone) stays below it.
 constexpr double max_model_corner_angle = 0.6 * M_PI;

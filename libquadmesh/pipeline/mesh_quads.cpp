@@ -6,6 +6,7 @@
 #include "libquadmesh/forms/remesh.h"
 #include "libquadmesh/param/form_choice.h"
 #include "libquadmesh/param/surface_forms.h"
+#include "libquadmesh/param/barrier_untangle.h"
 #include "libquadmesh/param/untangle.h"
 #include "libquadmesh/quality/hausdorff.h"
 #include "libquadmesh/quality/quad_quality.h"
@@ -232,8 +233,9 @@ QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, con
       for (const MapZero& z : r.zeros.zeros)
         if (z.order > 0 && z.representative >= 0) r.zero_vertices.push_back({z.representative, z.order, z.on_boundary});
       r.zero_vertices = merge_close_zeros(soup, input, target, r.zero_vertices, 1.0);
-      for (const ZeroVertex& c : boundary_corners(soup, input, options.corner_angle_deg, r.size, r.zero_vertices))
-        r.zero_vertices.push_back(c);
+      r.zero_vertices = add_corners(soup, input, target, r.zero_vertices,
+                                    boundary_corners(soup, input, options.corner_angle_deg, r.size, r.zero_vertices),
+                                    1.0);
     }
     {
       std::vector<FaceMap*> maps{&target};
@@ -251,8 +253,10 @@ QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, con
       loops.handles = named.handles;
     }
     r.quantization = quantize(soup, adjacency, target, basis, r.zero_vertices, loops);
-    if (r.quantization.flipped > 0) {
-      stages.next("untangling", fmt::format("untangling {} folded triangles", r.quantization.flipped));
+    const auto unsafe = std::count_if(r.quantization.param.corners.begin(), r.quantization.param.corners.end(),
+                                      [](const CornerValues& c) { return !safely_positive(c); });
+    if (unsafe > 0) {
+      stages.next("untangling", fmt::format("untangling {} folded or nearly flat triangles", unsafe));
       std::vector<char> pinned(soup.points.size(), 0);
       for (const ZeroVertex& z : r.zero_vertices) pinned[static_cast<std::size_t>(z.vertex)] = 1;
       for (const ZeroVertex& z : r.zero_vertices) {
@@ -260,7 +264,14 @@ QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, con
         // cannot reproduce an image angle other than 2 pi)
         for (int v : vertex_ring(soup, adjacency, z.vertex).neighbours) if (!pinned[static_cast<std::size_t>(v)]) pinned[static_cast<std::size_t>(v)] = 2;
       }
-      r.untangle = untangle(soup, adjacency, r.quantization.param, pinned);
+      // all the vertices around the folds at once; what that leaves, one at a time
+      r.untangle = untangle_by_barrier(soup, adjacency, r.quantization.param, pinned);
+      if (r.untangle.flipped_after > 0) {
+        const UntangleReport local = untangle(soup, adjacency, r.quantization.param, pinned);
+        r.untangle.flipped_after = local.flipped_after;
+        r.untangle.moved_vertices += local.moved_vertices;
+        r.untangle.rounds += local.rounds;
+      }
     }
 
     if (options.rotate)  // i h: a quarter turn of the plane maps the lattice onto itself
