@@ -426,14 +426,22 @@ Quantization quantize(const TriangleSoup& soup, const SurfaceAdjacency& adjacenc
     cones.push_back(&z);
     is_cone[static_cast<std::size_t>(z.vertex)] = 1;
   }
+  // consecutive zeros along a loop take distinct integers U (the boundary arc
+  // between them is monotone in U and would collapse): a zero that would round
+  // onto the one before it takes the next integer in the direction of travel
+  std::unordered_map<int, double> boundary_zero_psi;
   for (const auto& loop : loops.boundaries) {
     double position = value_at(soup, adjacency, Xi, loop.front()).real();
-    double last_lattice = std::nan("");
+    double last_lattice = std::nan(""), last_position = 0;
     for (std::size_t i = 0; i < loop.size(); ++i) {
       const int v = loop[i];
       if (i > 0) position += edge_value(adjacency, xi, loop[i - 1], v).real();
       if (is_cone[static_cast<std::size_t>(v)]) {
-        last_lattice = std::round(position);
+        double u = std::round(position);
+        if (u == last_lattice) u += position >= last_position ? 1 : -1;
+        boundary_zero_psi[v] = u - position;
+        last_lattice = u;
+        last_position = position;
         continue;
       }
       const auto corner = corner_at.find(v);
@@ -445,6 +453,7 @@ Quantization quantize(const TriangleSoup& soup, const SurfaceAdjacency& adjacenc
       cones.push_back(corner->second);
       is_cone[static_cast<std::size_t>(v)] = 1;
       last_lattice = std::round(position);
+      last_position = position;
       ++q.corners;
     }
   }
@@ -468,7 +477,9 @@ Quantization quantize(const TriangleSoup& soup, const SurfaceAdjacency& adjacenc
       ++q.corners_dropped;
       continue;
     }
-    const Complex lattice_psi = lattice(z->vertex);
+    Complex lattice_psi = lattice(z->vertex);
+    if (const auto it = boundary_zero_psi.find(z->vertex); it != boundary_zero_psi.end())
+      lattice_psi.real(it->second);
     fixed_u[z->vertex] = lattice_psi.real();
     if (!z->on_boundary) fixed_v[z->vertex] = lattice_psi.imag();
     constrained[static_cast<std::size_t>(z->vertex)] = 1;

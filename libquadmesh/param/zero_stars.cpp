@@ -104,7 +104,16 @@ std::vector<ZeroVertex> merge_close_zeros(const TriangleSoup& soup, const Surfac
   for (std::size_t i = 0; i < zeros.size(); ++i)
     for (const auto& [v, d] : image_ball(soup, adjacency, map, zeros[i].vertex, radius)) {
       const auto hit = zero_at.find(v);
-      if (hit != zero_at.end()) groups.unite(static_cast<int>(i), hit->second);
+      if (hit == zero_at.end()) continue;
+      const ZeroVertex& other = zeros[static_cast<std::size_t>(hit->second)];
+      // two zeros of one boundary loop need only distinct integers U, which the
+      // quantization gives consecutive zeros; merged, the arc between them would
+      // collapse to a point
+      const bool same_loop = zeros[i].on_boundary && other.on_boundary &&
+                             adjacency.loop_of_vertex[static_cast<std::size_t>(zeros[i].vertex)] ==
+                                 adjacency.loop_of_vertex[static_cast<std::size_t>(other.vertex)];
+      if (same_loop && d >= 0.5 * radius) continue;
+      groups.unite(static_cast<int>(i), hit->second);
     }
   std::unordered_map<int, std::vector<int>> members;
   for (std::size_t i = 0; i < zeros.size(); ++i) members[groups.find(static_cast<int>(i))].push_back(static_cast<int>(i));

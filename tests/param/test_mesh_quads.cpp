@@ -108,6 +108,48 @@ TEST_CASE("plate with two holes (CAD): one interior zero, corners on the lattice
   CHECK(r.quantization.distortion < 0.01);
 }
 
+TEST_CASE("curved shell with two holes (CAD): two boundary zeros on the small hole kept apart, no fold left") {
+  io::ReadOptions read;
+  const TriangleSoup input =
+      analyze_topology(io::read_surface(test::example("curved-shell-holes.geo"), read).soup).soup;
+  QuadMeshOptions options;
+  options.size_relative = 0.015;
+  const QuadMeshResult r = mesh_quads(input, options);
+  check_result(input, r, -1, 3);
+  // 7 mm apart on the small hole but within one cell of the image: merged into one
+  // zero of order 2, the arc between them collapsed and quads cut across the hole
+  std::size_t boundary_zeros = 0;
+  for (const ZeroVertex& z : r.zero_vertices)
+    if (z.on_boundary && !z.corner) {
+      ++boundary_zeros;
+      CHECK(z.order == 1);
+    }
+  CHECK(boundary_zeros == 2);
+  CHECK(r.extraction.degenerate_cells == 0);
+  const QuadQuality q = quad_quality(polygon_mesh(r.quads), &input);
+  CHECK(q.hausdorff_rel < 0.01);
+}
+
+TEST_CASE("pig: the folds near its cones are untangled, the extraction drops no cell") {
+  io::ReadOptions read;
+  const TriangleSoup input = analyze_topology(io::read_surface(test::shared_mesh("pig.off"), read).soup).soup;
+  QuadMeshOptions options;
+  options.size_relative = 0.015;
+  options.max_deviation = -1;
+  const QuadMeshResult r = mesh_quads(input, options);
+  // the quantization leaves folds a few rings from the zeros and corners (27 on
+  // this input), which moving one vertex at a time could not undo
+  CHECK(r.quantization.flipped > 0);
+  CHECK(r.untangle.flipped_after == 0);
+  CHECK(r.extraction.bad_triangles == 0);
+  CHECK(r.extraction.incomplete_cells == 0);
+  CHECK(r.extraction.degenerate_cells == 0);
+  const QuadQuality q = quad_quality(polygon_mesh(r.quads), &input);
+  CHECK(q.inverted == 0);
+  CHECK(q.euler_characteristic == -5);
+  CHECK(q.boundary_loops == 7);
+}
+
 TEST_CASE("kitten with two holes: genus 1, two zeros of order 1") {
   io::ReadOptions read;
   const TriangleSoup input = analyze_topology(io::read_surface(test::shared_mesh("kitten-2holes.obj"), read).soup).soup;
