@@ -207,7 +207,11 @@ bool untangle_region(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   auto untangled = [&](const std::vector<CornerValues>& corners) {
     return std::all_of(corners.begin(), corners.end(), safely_positive);
   };
-  for (int round = 0; round < 80 && !(D > 0 && untangled(displaced(x))); ++round) {
+  // a region whose smallest determinant stops rising in 8 rounds cannot be
+  // untangled with its outer ring where it is: a larger region is tried instead
+  double best_D = D;
+  int stalled = 0;
+  for (int round = 0; round < 60 && stalled < 8 && !(D > 0 && untangled(displaced(x))); ++round) {
     // the line search may stop on a trial point: keep the best point evaluated
     Eigen::VectorXd best = x;
     double best_energy = region.energy(x, grad, eps);
@@ -231,7 +235,13 @@ bool untangle_region(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
     const double sigma = std::max(1 - best_energy / previous, 0.1);
     const double mu = (1 - sigma) * chi(D, eps);
     previous = best_energy;
-    eps = D < mu ? 2 * std::sqrt(mu * (mu - D)) : 0.1 * eps;
+    eps = D < mu ? std::min(2 * std::sqrt(mu * (mu - D)), 0.7 * eps) : 0.1 * eps;
+    if (D > best_D + 0.01 * std::abs(best_D)) {
+      best_D = D;
+      stalled = 0;
+    } else {
+      ++stalled;
+    }
   }
   const std::vector<CornerValues> corners = displaced(x);
   if (!untangled(corners)) return false;
