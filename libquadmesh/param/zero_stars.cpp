@@ -109,10 +109,12 @@ std::vector<ZeroVertex> merge_close_zeros(const TriangleSoup& soup, const Surfac
       // two zeros of one boundary loop need only distinct integers U, which the
       // quantization gives consecutive zeros; merged, the arc between them would
       // collapse to a point
-      const bool same_loop = zeros[i].on_boundary && other.on_boundary &&
-                             adjacency.loop_of_vertex[static_cast<std::size_t>(zeros[i].vertex)] ==
-                                 adjacency.loop_of_vertex[static_cast<std::size_t>(other.vertex)];
-      if (same_loop && d >= 0.5 * radius) continue;
+      if (zeros[i].on_boundary && other.on_boundary) {
+        const bool same_loop = adjacency.loop_of_vertex[static_cast<std::size_t>(zeros[i].vertex)] ==
+                               adjacency.loop_of_vertex[static_cast<std::size_t>(other.vertex)];
+        // zeros of two loops cannot share a vertex: each loop turns by its own zeros
+        if (!same_loop || d >= 0.5 * radius) continue;
+      }
       groups.unite(static_cast<int>(i), hit->second);
     }
   std::unordered_map<int, std::vector<int>> members;

@@ -31,7 +31,8 @@ struct ZeroVertex {
 /// Zeros closer than `radius` in the image of `map` (shortest paths along edges,
 /// edge length |map(e)|) cannot be separated by the grid (two zeros of one boundary
 /// loop can, down to radius / 2: they need distinct integers U only, which the
-/// quantization gives consecutive ones): they are merged into one
+/// quantization gives consecutive ones; zeros of two loops are never merged, each
+/// loop turns by its own zeros): they are merged into one
 /// zero whose order is the sum of theirs (counted on the double when the merged
 /// zero is on the boundary), placed at the boundary zero of highest order if there
 /// is one, else at the zero of highest order. Before that, an interior zero of

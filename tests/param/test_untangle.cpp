@@ -140,3 +140,25 @@ TEST_CASE("two zeros of one boundary loop merge only when closer than half a cel
   REQUIRE(inside.size() == 1);
   CHECK(inside[0].order == 2);
 }
+
+TEST_CASE("zeros of two boundary loops never merge, however close") {
+  // a thin annulus: inner and outer circle 0.1 apart, 0.4 in the image
+  const TriangleSoup soup = test::annulus(1.0, 1.1, 1, 48);
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  const FaceMap m = pushed_map(soup, 4.0, Complex(0, 0), 0.0, 1.0);
+  auto nearest = [&](double x, double y) {
+    int best = 0;
+    for (std::size_t v = 1; v < soup.points.size(); ++v)
+      if (std::hypot(soup.points[v].x() - x, soup.points[v].y() - y) <
+          std::hypot(soup.points[static_cast<std::size_t>(best)].x() - x, soup.points[static_cast<std::size_t>(best)].y() - y))
+        best = static_cast<int>(v);
+    return best;
+  };
+  const int inner = nearest(1.0, 0.0), outer = nearest(1.1, 0.0);
+  REQUIRE(adjacency.loop_of_vertex[static_cast<std::size_t>(inner)] != adjacency.loop_of_vertex[static_cast<std::size_t>(outer)]);
+  const std::vector<ZeroVertex> zeros =
+      merge_close_zeros(soup, adjacency, m, {ZeroVertex{inner, 1, true, false}, ZeroVertex{outer, 1, true, false}}, 1.0);
+  REQUIRE(zeros.size() == 2);
+  CHECK(zeros[0].vertex == inner);
+  CHECK(zeros[1].vertex == outer);
+}
