@@ -3,6 +3,7 @@
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/extract/quad_chords.h"
 #include "libquadmesh/quality/hausdorff.h"
+#include "libquadmesh/quality/quad_quality.h"
 
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -178,6 +179,12 @@ double length(const LatticeQuads& q, const Quad& c, int i) {
 
 double max_of(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end()); }
 
+/// Quads with a corner whose scaled Jacobian (the quality module's) is <= 0.
+std::size_t inverted_quads(const LatticeQuads& quads) {
+  const std::vector<double> jacobians = quad_shape_samples(polygon_mesh(quads)).scaled_jacobian;
+  return static_cast<std::size_t>(std::count_if(jacobians.begin(), jacobians.end(), [](double j) { return j <= 0; }));
+}
+
 }  // namespace
 
 std::vector<double> quad_deviation(const TriangleSoup& surface, const LatticeQuads& quads) {
@@ -266,12 +273,29 @@ DeviationRefinementReport refine_to_deviation(const TriangleSoup& surface,
   std::vector<double> dev = deviation(index, samples, quads);
   report.deviation_before = max_of(dev);
   const std::size_t start = quads.quads.size();
+  // a new point is placed on S by closest point; on a thin or sharply curved part
+  // that point can fall where the split quads turn over: such a round is undone and
+  // the refinement stops there
+  std::size_t inverted = inverted_quads(quads);
   auto round = [&](double threshold, std::size_t max_quads) {
+    const LatticeQuads before = quads;
+    const std::vector<int> loops_before = boundary_loop_of_point;
+    const std::vector<double> dev_before = dev;
     const std::size_t chosen =
         split_round(placement, index, samples, quads, boundary_loop_of_point, dev, threshold, max_quads);
+    if (chosen == 0) return false;
+    const std::size_t now = inverted_quads(quads);
+    if (now > inverted) {
+      quads = before;
+      boundary_loop_of_point = loops_before;
+      dev = dev_before;
+      ++report.rounds_undone;
+      return false;
+    }
+    inverted = now;
     report.chords_split += chosen;
-    report.rounds += chosen > 0;
-    return chosen > 0;
+    ++report.rounds;
+    return true;
   };
   // the worst quads first: the largest deviation is what the budget must bring down
   for (int r = 0; r < options.max_rounds; ++r)

@@ -34,6 +34,7 @@ struct DeviationRefinementReport {
   std::size_t quads_added = 0;
   int rounds = 0;
   bool tolerance_met = false;   ///< after the rounds within max_quads (before the min_quads rounds)
+  int rounds_undone = 0;        ///< a round that turned a quad over is undone, and the refinement stops
 };
 
 /// Per quad, the estimated deviation: the largest distance from a sample of the quad

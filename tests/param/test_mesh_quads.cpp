@@ -192,6 +192,22 @@ TEST_CASE("aqua-center: splitting chords brings the quads within the tolerance, 
   CHECK(q.irregular_interior == q0.irregular_interior);
 }
 
+TEST_CASE("chord refinement never turns a quad over: a round that would is undone") {
+  // bunny-open at 2%: splitting the chords through its ears places a quad centre
+  // where the split quads turn over (1 inverted quad before the guard)
+  io::ReadOptions read;
+  const TriangleSoup input = analyze_topology(io::read_surface(test::shared_mesh("bunny-open.obj"), read).soup).soup;
+  QuadMeshOptions options;
+  options.size_relative = 0.02;
+  const QuadMeshResult r = mesh_quads(input, options);
+  const QuadQuality q = quad_quality(polygon_mesh(r.quads), nullptr);
+  CHECK(q.inverted == 0);
+  CHECK(r.refinement.rounds_undone >= 1);
+  CHECK(r.refinement.chords_split > 0);
+  CHECK(q.euler_characteristic == -3);
+  CHECK(q.boundary_loops == 5);
+}
+
 TEST_CASE("--form, --coeffs and --rotate choose the differential") {
   const TriangleSoup soup = test::annulus(1.0, 2.0, 8, 64);
   QuadMeshOptions plain;

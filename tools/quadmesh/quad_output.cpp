@@ -159,7 +159,8 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
                      {"tolerance_met", rf.tolerance_met},
                      {"chords_split", rf.chords_split},
                      {"quads_added", rf.quads_added},
-                     {"rounds", rf.rounds}};
+                     {"rounds", rf.rounds},
+                     {"rounds_undone", rf.rounds_undone}};
   Json timings = Json::object();  // a stage run more than once (another form, a coarser base) adds up
   for (const auto& [stage, t] : result.timings) timings[stage] = timings.value(stage, 0.0) + t;
   timings["total"] = seconds;
