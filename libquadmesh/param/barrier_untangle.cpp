@@ -191,7 +191,7 @@ bool untangle_region(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   LBFGSpp::LBFGSParam<double> settings;
   settings.epsilon = 1e-9;
   settings.epsilon_rel = 1e-9;
-  settings.max_iterations = 200;
+  settings.max_iterations = 100;
   LBFGSpp::LBFGSSolver<double> solver(settings);
   // the region's corners moved by y, face by face
   auto displaced = [&](const Eigen::VectorXd& y) {
