@@ -21,6 +21,9 @@ namespace {
 
 double distance_to_integer(double x) { return std::abs(x - std::round(x)); }
 
+/// An input file as `quadmesh mesh` sees it: read, checked, oriented.
+TriangleSoup analysed(const std::string& path) { return analyze_topology(io::read_surface(path, {}).soup).soup; }
+
 /// Valence (number of quads) of every quad-mesh point.
 std::vector<int> quads_at(const LatticeQuads& q) {
   std::vector<int> count(q.points.size(), 0);
@@ -97,8 +100,7 @@ TEST_CASE("annulus: a singularity-free grid, integer periods, boundaries on inte
 }
 
 TEST_CASE("plate with two holes (CAD): one interior zero, corners on the lattice") {
-  io::ReadOptions read;
-  const TriangleSoup input = analyze_topology(io::read_surface(test::example("plate-two-holes.geo"), read).soup).soup;
+  const TriangleSoup input = analysed(test::example("plate-two-holes.geo"));
   const QuadMeshResult r = mesh_quads(input, {});
   check_result(input, r, -1, 3);
   CHECK(r.quantization.corners == 4);
@@ -109,9 +111,7 @@ TEST_CASE("plate with two holes (CAD): one interior zero, corners on the lattice
 }
 
 TEST_CASE("curved shell with two holes (CAD): two boundary zeros on the small hole kept apart, no fold left") {
-  io::ReadOptions read;
-  const TriangleSoup input =
-      analyze_topology(io::read_surface(test::example("curved-shell-holes.geo"), read).soup).soup;
+  const TriangleSoup input = analysed(test::example("curved-shell-holes.geo"));
   QuadMeshOptions options;
   options.size_relative = 0.015;
   const QuadMeshResult r = mesh_quads(input, options);
@@ -131,8 +131,7 @@ TEST_CASE("curved shell with two holes (CAD): two boundary zeros on the small ho
 }
 
 TEST_CASE("pig: the folds near its cones are untangled, the extraction drops no cell") {
-  io::ReadOptions read;
-  const TriangleSoup input = analyze_topology(io::read_surface(test::shared_mesh("pig.off"), read).soup).soup;
+  const TriangleSoup input = analysed(test::shared_mesh("pig.off"));
   QuadMeshOptions options;
   options.size_relative = 0.015;
   options.max_deviation = -1;
@@ -151,8 +150,7 @@ TEST_CASE("pig: the folds near its cones are untangled, the extraction drops no 
 }
 
 TEST_CASE("kitten with two holes: genus 1, two zeros of order 1") {
-  io::ReadOptions read;
-  const TriangleSoup input = analyze_topology(io::read_surface(test::shared_mesh("kitten-2holes.obj"), read).soup).soup;
+  const TriangleSoup input = analysed(test::shared_mesh("kitten-2holes.obj"));
   QuadMeshOptions options;
   options.size_relative = 0.015;
   const QuadMeshResult r = mesh_quads(input, options);
@@ -161,8 +159,7 @@ TEST_CASE("kitten with two holes: genus 1, two zeros of order 1") {
 }
 
 TEST_CASE("aqua-center: splitting chords brings the quads within the tolerance, singular vertices unchanged") {
-  io::ReadOptions read;
-  const TriangleSoup input = analyze_topology(io::read_surface(test::shared_mesh("aqua-center.off"), read).soup).soup;
+  const TriangleSoup input = analysed(test::shared_mesh("aqua-center.off"));
   const double diagonal = bounding_box_diagonal(input.points, input.triangles);
   QuadMeshOptions options;
   options.size_relative = 0.015;
@@ -195,8 +192,7 @@ TEST_CASE("aqua-center: splitting chords brings the quads within the tolerance, 
 TEST_CASE("chord refinement never turns a quad over: a round that would is undone") {
   // bunny-open at 2%: splitting the chords through its ears places a quad centre
   // where the split quads turn over (1 inverted quad before the guard)
-  io::ReadOptions read;
-  const TriangleSoup input = analyze_topology(io::read_surface(test::shared_mesh("bunny-open.obj"), read).soup).soup;
+  const TriangleSoup input = analysed(test::shared_mesh("bunny-open.obj"));
   QuadMeshOptions options;
   options.size_relative = 0.02;
   const QuadMeshResult r = mesh_quads(input, options);
