@@ -3,12 +3,12 @@
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/extract/quad_chords.h"
 #include "libquadmesh/quality/hausdorff.h"
+#include "libquadmesh/quality/triangle_tree.h"
 #include "libquadmesh/quality/quad_quality.h"
 
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
@@ -21,54 +21,16 @@ namespace qm {
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Triangle3 = K::Triangle_3;
 using Segment3 = K::Segment_3;
-using TrianglePrimitive = CGAL::AABB_triangle_primitive<K, std::vector<Triangle3>::const_iterator>;
-using TriangleTree = CGAL::AABB_tree<CGAL::AABB_traits<K, TrianglePrimitive>>;
 using SegmentPrimitive = CGAL::AABB_segment_primitive<K, std::vector<Segment3>::const_iterator>;
 using SegmentTree = CGAL::AABB_tree<CGAL::AABB_traits<K, SegmentPrimitive>>;
 
 K::Point_3 cgal(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
 Vec3 eigen(const K::Point_3& p) { return {p.x(), p.y(), p.z()}; }
 
-/// Triangles with an AABB tree; ids[k] is the caller's id of triangles[k]
-/// (degenerate triangles are left out).
-struct TriangleIndex {
-  std::vector<Triangle3> triangles;
-  std::vector<int> ids;
-  std::unique_ptr<TriangleTree> tree;
-
-  void add(const Vec3& a, const Vec3& b, const Vec3& c, int id) {
-    Triangle3 t(cgal(a), cgal(b), cgal(c));
-    if (t.is_degenerate()) return;
-    triangles.push_back(t);
-    ids.push_back(id);
-  }
-  void build() {
-    tree = std::make_unique<TriangleTree>(triangles.cbegin(), triangles.cend());
-    tree->accelerate_distance_queries();
-  }
-  /// closest point and the id of its triangle
-  std::pair<Vec3, int> closest(const Vec3& p) const {
-    const auto hit = tree->closest_point_and_primitive(cgal(p));
-    return {eigen(hit.first), ids[static_cast<std::size_t>(hit.second - triangles.cbegin())]};
-  }
-};
-
-TriangleIndex surface_index(const TriangleSoup& s) {
-  TriangleIndex index;
-  for (std::size_t f = 0; f < s.triangles.size(); ++f) {
-    const Triangle& t = s.triangles[f];
-    index.add(s.points[static_cast<std::size_t>(t[0])], s.points[static_cast<std::size_t>(t[1])],
-              s.points[static_cast<std::size_t>(t[2])], static_cast<int>(f));
-  }
-  index.build();
-  return index;
-}
-
 /// the quads' triangles v0v1v2 and v0v2v3, with the quad as id
-TriangleIndex quad_index(const LatticeQuads& q) {
-  TriangleIndex index;
+TriangleTree quad_index(const LatticeQuads& q) {
+  TriangleTree index;
   for (std::size_t k = 0; k < q.quads.size(); ++k) {
     const auto& c = q.quads[k];
     auto p = [&](int i) { return q.points[static_cast<std::size_t>(c[static_cast<std::size_t>(i)])]; };
@@ -79,12 +41,12 @@ TriangleIndex quad_index(const LatticeQuads& q) {
   return index;
 }
 
-std::vector<double> deviation(const TriangleIndex& surface, const std::vector<Vec3>& surface_samples,
+std::vector<double> deviation(const TriangleTree& surface, const std::vector<Vec3>& surface_samples,
                               const LatticeQuads& q) {
   std::vector<double> out(q.quads.size(), 0.0);
   if (q.quads.empty()) return out;
-  const TriangleIndex quads = quad_index(q);
-  if (quads.triangles.empty()) return out;
+  const TriangleTree quads = quad_index(q);
+  if (quads.empty()) return out;
   for (const Vec3& s : surface_samples) {
     const auto [p, k] = quads.closest(s);
     double& d = out[static_cast<std::size_t>(k)];
@@ -112,7 +74,7 @@ std::array<double, 3> barycentric(const Vec3& p, const Vec3& a, const Vec3& b, c
 /// Places new points on S: boundary midpoints on S's boundary, the others on S.
 class Placement {
  public:
-  Placement(const TriangleSoup& s, const SurfaceAdjacency& adjacency, const TriangleIndex& surface)
+  Placement(const TriangleSoup& s, const SurfaceAdjacency& adjacency, const TriangleTree& surface)
       : s_(s), adjacency_(adjacency), surface_(surface) {
     for (const auto& loop : adjacency.boundary_loops)
       for (std::size_t i = 0; i < loop.size(); ++i) {
@@ -165,7 +127,7 @@ class Placement {
   const Vec3& point(int v) const { return s_.points[static_cast<std::size_t>(v)]; }
   const TriangleSoup& s_;
   const SurfaceAdjacency& adjacency_;
-  const TriangleIndex& surface_;
+  const TriangleTree& surface_;
   std::vector<Segment3> segments_;
   std::vector<std::pair<int, int>> ends_;
   std::unique_ptr<SegmentTree> boundary_;
@@ -188,7 +150,7 @@ std::size_t inverted_quads(const LatticeQuads& quads) {
 }  // namespace
 
 std::vector<double> quad_deviation(const TriangleSoup& surface, const LatticeQuads& quads) {
-  return deviation(surface_index(surface), surface_samples(surface.points, surface.triangles, {2}), quads);
+  return deviation(TriangleTree(surface.points, surface.triangles), surface_samples(surface.points, surface.triangles, {2}), quads);
 }
 
 namespace {
@@ -196,7 +158,7 @@ namespace {
 /// One round: splits the chords through the quads whose deviation exceeds
 /// `threshold`, worst first, as long as the quad count stays within `max_quads`;
 /// places the new points and updates `dev`. Returns the number of chords split.
-std::size_t split_round(const Placement& placement, const TriangleIndex& index, const std::vector<Vec3>& samples,
+std::size_t split_round(const Placement& placement, const TriangleTree& index, const std::vector<Vec3>& samples,
                         LatticeQuads& quads, std::vector<int>& boundary_loop_of_point, std::vector<double>& dev,
                         double threshold, std::size_t max_quads) {
   std::vector<int> worst;
@@ -267,7 +229,7 @@ DeviationRefinementReport refine_to_deviation(const TriangleSoup& surface,
   QM_ASSERT(options.tolerance > 0);
   QM_ASSERT(boundary_loop_of_point.size() == quads.points.size());
   DeviationRefinementReport report;
-  const TriangleIndex index = surface_index(surface);
+  const TriangleTree index(surface.points, surface.triangles);
   const std::vector<Vec3> samples = surface_samples(surface.points, surface.triangles, {2});
   const Placement placement(surface, adjacency, index);
   std::vector<double> dev = deviation(index, samples, quads);

@@ -1,11 +1,7 @@
 #include "libquadmesh/quality/hausdorff.h"
 
 #include "libquadmesh/core/error.h"
-
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include "libquadmesh/quality/triangle_tree.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,19 +10,6 @@
 #include <utility>
 
 namespace qm {
-
-namespace {
-
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Triangle3 = K::Triangle_3;
-using Primitive = CGAL::AABB_triangle_primitive<K, std::vector<Triangle3>::const_iterator>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
-
-K::Point_3 cgal_point(const Vec3& p) {
-  return {p.x(), p.y(), p.z()};
-}
-
-}  // namespace
 
 std::vector<Vec3> surface_samples(const std::vector<Vec3>& points,
                                   const std::vector<Triangle>& triangles,
@@ -67,21 +50,10 @@ std::vector<Vec3> surface_samples(const std::vector<Vec3>& points,
 
 double max_distance_to_surface(const std::vector<Vec3>& samples, const std::vector<Vec3>& points,
                                const std::vector<Triangle>& triangles) {
-  std::vector<Triangle3> soup;
-  soup.reserve(triangles.size());
-  for (const Triangle& t : triangles) {
-    Triangle3 tri(cgal_point(points[static_cast<std::size_t>(t[0])]),
-                  cgal_point(points[static_cast<std::size_t>(t[1])]),
-                  cgal_point(points[static_cast<std::size_t>(t[2])]));
-    // a degenerate triangle is a segment: the edges of its neighbours cover it
-    if (!tri.is_degenerate()) soup.push_back(tri);
-  }
-  if (soup.empty() || samples.empty()) return std::numeric_limits<double>::quiet_NaN();
-  Tree tree(soup.cbegin(), soup.cend());
-  tree.accelerate_distance_queries();
+  const TriangleTree tree(points, triangles);
+  if (tree.empty() || samples.empty()) return std::numeric_limits<double>::quiet_NaN();
   double worst = 0;
-  for (const Vec3& s : samples)
-    worst = std::max(worst, tree.squared_distance(cgal_point(s)));
+  for (const Vec3& s : samples) worst = std::max(worst, tree.squared_distance(s));
   return std::sqrt(worst);
 }
 

@@ -1,0 +1,68 @@
+#include "libquadmesh/quality/triangle_tree.h"
+
+#include "libquadmesh/core/error.h"
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+namespace qm {
+
+namespace {
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Triangle3 = K::Triangle_3;
+using Primitive = CGAL::AABB_triangle_primitive<K, std::vector<Triangle3>::const_iterator>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
+
+K::Point_3 cgal(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
+}  // namespace
+
+struct TriangleTree::Impl {
+  std::vector<Triangle3> triangles;
+  std::vector<int> ids;
+  std::unique_ptr<Tree> tree;
+};
+
+TriangleTree::TriangleTree() : impl_(std::make_unique<Impl>()) {}
+TriangleTree::~TriangleTree() = default;
+TriangleTree::TriangleTree(TriangleTree&&) noexcept = default;
+TriangleTree& TriangleTree::operator=(TriangleTree&&) noexcept = default;
+
+TriangleTree::TriangleTree(const std::vector<Vec3>& points, const std::vector<Triangle>& triangles)
+    : TriangleTree() {
+  for (std::size_t f = 0; f < triangles.size(); ++f) {
+    const Triangle& t = triangles[f];
+    add(points[static_cast<std::size_t>(t[0])], points[static_cast<std::size_t>(t[1])],
+        points[static_cast<std::size_t>(t[2])], static_cast<int>(f));
+  }
+  build();
+}
+
+void TriangleTree::add(const Vec3& a, const Vec3& b, const Vec3& c, int id) {
+  Triangle3 t(cgal(a), cgal(b), cgal(c));
+  if (t.is_degenerate()) return;
+  impl_->triangles.push_back(t);
+  impl_->ids.push_back(id);
+}
+
+void TriangleTree::build() {
+  impl_->tree = std::make_unique<Tree>(impl_->triangles.cbegin(), impl_->triangles.cend());
+  impl_->tree->accelerate_distance_queries();
+}
+
+bool TriangleTree::empty() const { return impl_->triangles.empty(); }
+
+std::pair<Vec3, int> TriangleTree::closest(const Vec3& p) const {
+  QM_ASSERT(impl_->tree && !empty());
+  const auto hit = impl_->tree->closest_point_and_primitive(cgal(p));
+  return {Vec3(hit.first.x(), hit.first.y(), hit.first.z()),
+          impl_->ids[static_cast<std::size_t>(hit.second - impl_->triangles.cbegin())]};
+}
+
+double TriangleTree::squared_distance(const Vec3& p) const {
+  QM_ASSERT(impl_->tree && !empty());
+  return impl_->tree->squared_distance(cgal(p));
+}
+
+}  // namespace qm

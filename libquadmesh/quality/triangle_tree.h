@@ -1,0 +1,38 @@
+// Closest points on a set of 3D triangles (a CGAL AABB tree): the distance queries
+// of the Hausdorff estimate and of the quad refinement's deviation and placement.
+#pragma once
+
+#include "libquadmesh/core/triangle_soup.h"
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace qm {
+
+class TriangleTree {
+ public:
+  TriangleTree();
+  ~TriangleTree();
+  TriangleTree(TriangleTree&&) noexcept;
+  TriangleTree& operator=(TriangleTree&&) noexcept;
+
+  /// The triangles of a soup, each with its index as id.
+  TriangleTree(const std::vector<Vec3>& points, const std::vector<Triangle>& triangles);
+
+  /// Adds a triangle with the caller's id; a degenerate (zero-area) triangle is
+  /// left out (the edges of its neighbours cover it). Call build() after the last.
+  void add(const Vec3& a, const Vec3& b, const Vec3& c, int id);
+  void build();
+
+  bool empty() const;
+  /// The closest point on the triangles and the id of its triangle (not empty()).
+  std::pair<Vec3, int> closest(const Vec3& p) const;
+  double squared_distance(const Vec3& p) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace qm
