@@ -127,6 +127,7 @@ void expect_quad_mesh(const std::string& input, const std::string& size, int chi
   const auto& q = j["quality"];
   CHECK(q["triangles"] == 0);
   CHECK(q["inverted"] == 0);
+  CHECK(run.err.find("warning: ") == std::string::npos);
   CHECK(q["euler_characteristic"] == chi);
   CHECK(q["boundary_loops"] == loops);
   CHECK(q["irregular_interior"] == j["expected"]["irregular_interior"]);
@@ -148,6 +149,22 @@ void expect_quad_mesh(const std::string& input, const std::string& size, int chi
 TEST_CASE("mesh: pure quads with the input's topology, quality and groups (plate, kitten)") {
   expect_quad_mesh(test::example("plate-two-holes.geo"), "2", -1, 3, {"hole_left", "hole_right", "outer"});
   expect_quad_mesh(test::shared_mesh("kitten-2holes.obj"), "1.5%", -2, 2, {"boundary_0", "boundary_1"});
+}
+
+TEST_CASE("mesh: inverted quads are written, with one warning line that names the first, even with -q") {
+  // bunny-open at 1.2% without refinement: one boundary quad turns over where the
+  // scan's hole boundary zigzags back on itself
+  const std::string dir = test::scratch_dir("cli_inverted");
+  const std::string output = dir + "/out.msh";
+  const Run run = quadmesh("mesh " + quoted(test::shared_mesh("bunny-open.obj")) + " -o " + quoted(output) +
+                           " --size 1.2% --max-deviation off -q");
+  CHECK(run.status == 0);
+  CHECK(std::filesystem::exists(output));
+  CHECK(run.out.find("inverted)") != std::string::npos);
+  const auto lines = run.error_lines();
+  REQUIRE(lines.size() == 1);
+  CHECK(lines[0].rfind("quadmesh: warning: 1 inverted quads (min scaled Jacobian -", 0) == 0);
+  CHECK(lines[0].find("the first near (") != std::string::npos);
 }
 
 TEST_CASE("mesh: bad options are usage errors, before any work") {

@@ -1,5 +1,6 @@
 #include "io/write_mesh.h"
 #include "libquadmesh/pipeline/mesh_quads.h"
+#include "libquadmesh/quality/quad_quality.h"
 #include "tools/common/exit_codes.h"
 #include "tools/common/input_surface.h"
 #include "tools/quadmesh/commands.h"
@@ -7,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 
 namespace qm::tools {
@@ -40,6 +42,22 @@ void require_conforming(const MeshSummary& s, const QuadMeshResult& r) {
                           "try another --size or --form",
                           q.euler_characteristic, q.boundary_loops, s.input_euler_characteristic,
                           s.input_boundary_loops, r.extraction.bad_triangles, r.extraction.incomplete_cells, where));
+}
+
+/// Inverted quads are written (the mesh is conforming) but a solver rejects them:
+/// one warning line on stderr, even with --quiet, naming the first.
+void warn_if_inverted(const MeshSummary& s, const QuadMeshResult& r) {
+  if (s.quality.inverted == 0) return;
+  const std::vector<double> jacobians = quad_shape_samples(polygon_mesh(r.quads)).scaled_jacobian;
+  const auto first = std::find_if(jacobians.begin(), jacobians.end(), [](double j) { return j <= 0; });
+  if (first == jacobians.end()) return;
+  Vec3 c = Vec3::Zero();
+  for (int v : r.quads.quads[static_cast<std::size_t>(first - jacobians.begin())])
+    c += r.quads.points[static_cast<std::size_t>(v)] / 4.0;
+  fmt::print(stderr,
+             "quadmesh: warning: {} inverted quads (min scaled Jacobian {:.3g}), the first near ({:.6g}, {:.6g}, "
+             "{:.6g}); a solver will reject them: try another --size or --form\n",
+             s.quality.inverted, s.quality.min_scaled_jacobian, c.x(), c.y(), c.z());
 }
 }  // namespace
 
@@ -77,6 +95,7 @@ int run_mesh(const MeshOptions& options, const CommonOptions& common) {
   io::write_mesh(options.output, output_mesh(result), write);
   if (!options.report.empty()) write_report(options.report, summary);
   print_summary(summary);
+  warn_if_inverted(summary, result);
   return exit_ok;
 }
 
