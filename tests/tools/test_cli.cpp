@@ -167,6 +167,31 @@ TEST_CASE("mesh: inverted quads are written, with one warning line that names th
   CHECK(lines[0].find("the first near (") != std::string::npos);
 }
 
+TEST_CASE("mesh: cells the extraction drops leave a gap, written with one warning line that names the first") {
+  // a flat plate with five holes: an interior zero on the level of a hole's
+  // boundary becomes a boundary zero of order 2 there, and the two sheets of one
+  // cell beside it are joined (area 2): the cell is dropped (a known defect)
+  const std::string dir = test::scratch_dir("cli_dropped");
+  {
+    std::ofstream geo(dir + "/plate.geo");
+    geo << "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 150, 80};\n"
+           "Disk(2) = {20, 20, 0, 5};\nDisk(3) = {50, 60, 0, 12};\nDisk(4) = {90, 25, 0, 8};\n"
+           "Disk(5) = {125, 60, 0, 4};\nDisk(6) = {130, 15, 0, 6};\n"
+           "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:6}; Delete; }\n";
+  }
+  const std::string output = dir + "/out.msh", report = dir + "/report.json";
+  const Run run = quadmesh("mesh " + quoted(dir + "/plate.geo") + " -o " + quoted(output) + " --size 1.5% -q --report " +
+                           quoted(report));
+  CHECK(run.status == 0);
+  CHECK(std::filesystem::exists(output));
+  const auto j = nlohmann::json::parse(slurp(report));
+  const int dropped = j["extraction"]["incomplete_cells"].get<int>() + j["extraction"]["degenerate_cells"].get<int>();
+  CHECK(dropped > 0);
+  const auto lines = run.error_lines();
+  REQUIRE(lines.size() == 1);
+  CHECK(lines[0].rfind("quadmesh: warning: " + std::to_string(dropped) + " lattice cells could not be made into quads, the first near (", 0) == 0);
+}
+
 TEST_CASE("mesh: bad options are usage errors, before any work") {
   const std::string dir = test::scratch_dir("cli_mesh_options");
   const std::string input = test::example("annulus.geo");

@@ -22,6 +22,16 @@ bool report_path_usable(const std::string& path) {
   return false;
 }
 
+/// "<lead> near (x, y, z)": the centroid of the first triangle where the extraction
+/// failed, or "" when there is none.
+std::string near_first_problem(const QuadMeshResult& r, const std::string& lead) {
+  if (r.extraction.first_problem_triangle < 0) return "";
+  const Triangle& t = r.surface.triangles[static_cast<std::size_t>(r.extraction.first_problem_triangle)];
+  const Vec3 c = (r.surface.points[static_cast<std::size_t>(t[0])] + r.surface.points[static_cast<std::size_t>(t[1])] +
+                  r.surface.points[static_cast<std::size_t>(t[2])]) / 3.0;
+  return fmt::format("{} near ({:.6g}, {:.6g}, {:.6g})", lead, c.x(), c.y(), c.z());
+}
+
 /// A quad mesh whose topology differs from the input's is broken output: refuse
 /// to write it (exit 1), naming where the parameterization failed.
 void require_conforming(const MeshSummary& s, const QuadMeshResult& r) {
@@ -29,19 +39,26 @@ void require_conforming(const MeshSummary& s, const QuadMeshResult& r) {
   if (q.euler_characteristic == s.input_euler_characteristic && q.boundary_loops == s.input_boundary_loops &&
       q.manifold && q.consistently_oriented && q.triangles == 0 && q.other_faces == 0)
     return;
-  std::string where;
-  if (r.extraction.first_problem_triangle >= 0) {
-    const Triangle& t = r.surface.triangles[static_cast<std::size_t>(r.extraction.first_problem_triangle)];
-    const Vec3 c = (r.surface.points[static_cast<std::size_t>(t[0])] + r.surface.points[static_cast<std::size_t>(t[1])] +
-                    r.surface.points[static_cast<std::size_t>(t[2])]) / 3.0;
-    where = fmt::format(" first near ({:.6g}, {:.6g}, {:.6g})", c.x(), c.y(), c.z());
-  }
+  const std::string where = near_first_problem(r, " first");
   throw Error(ErrorCode::solver,
               fmt::format("the quad mesh would not be conforming (chi {} and {} boundary loops, the input has {} "
                           "and {}): {} folded triangles and {} incomplete cells are left{}; no output was written; "
                           "try another --size or --form",
                           q.euler_characteristic, q.boundary_loops, s.input_euler_characteristic,
                           s.input_boundary_loops, r.extraction.bad_triangles, r.extraction.incomplete_cells, where));
+}
+
+/// Lattice cells the extraction could not make into quads leave gaps in the mesh
+/// (next to the boundary: the topology is the input's, so the mesh is written):
+/// one warning line on stderr, even with --quiet, naming the first.
+void warn_if_cells_dropped(const QuadMeshResult& r) {
+  const std::size_t dropped = r.extraction.incomplete_cells + r.extraction.degenerate_cells;
+  if (dropped == 0) return;
+  const std::string where = near_first_problem(r, ", the first");
+  fmt::print(stderr,
+             "quadmesh: warning: {} lattice cells could not be made into quads{}: the mesh leaves a gap there; try "
+             "another --size or --form\n",
+             dropped, where);
 }
 
 /// Inverted quads are written (the mesh is conforming) but a solver rejects them:
@@ -95,6 +112,7 @@ int run_mesh(const MeshOptions& options, const CommonOptions& common) {
   io::write_mesh(options.output, output_mesh(result), write);
   if (!options.report.empty()) write_report(options.report, summary);
   print_summary(summary);
+  warn_if_cells_dropped(result);
   warn_if_inverted(summary, result);
   return exit_ok;
 }
