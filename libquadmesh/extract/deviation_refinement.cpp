@@ -6,27 +6,13 @@
 #include "libquadmesh/quality/triangle_tree.h"
 #include "libquadmesh/quality/quad_quality.h"
 
-#include <CGAL/AABB_segment_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-
 #include <algorithm>
 #include <cmath>
-#include <memory>
 #include <numeric>
 
 namespace qm {
 
 namespace {
-
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Segment3 = K::Segment_3;
-using SegmentPrimitive = CGAL::AABB_segment_primitive<K, std::vector<Segment3>::const_iterator>;
-using SegmentTree = CGAL::AABB_tree<CGAL::AABB_traits<K, SegmentPrimitive>>;
-
-K::Point_3 cgal(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
-Vec3 eigen(const K::Point_3& p) { return {p.x(), p.y(), p.z()}; }
 
 /// the quads' triangles v0v1v2 and v0v2v3, with the quad as id
 TriangleTree quad_index(const LatticeQuads& q) {
@@ -79,13 +65,10 @@ class Placement {
     for (const auto& loop : adjacency.boundary_loops)
       for (std::size_t i = 0; i < loop.size(); ++i) {
         const int a = loop[i], b = loop[(i + 1) % loop.size()];
-        segments_.emplace_back(cgal(point(a)), cgal(point(b)));
+        boundary_.add(point(a), point(b), static_cast<int>(ends_.size()));
         ends_.push_back({a, b});
       }
-    if (!segments_.empty()) {
-      boundary_ = std::make_unique<SegmentTree>(segments_.cbegin(), segments_.cend());
-      boundary_->accelerate_distance_queries();
-    }
+    if (!ends_.empty()) boundary_.build();
   }
 
   std::pair<Vec3, SurfaceLocation> on_surface(const Vec3& guess) const {
@@ -99,10 +82,9 @@ class Placement {
   }
 
   std::pair<Vec3, SurfaceLocation> on_boundary(const Vec3& guess) const {
-    if (!boundary_) return on_surface(guess);
-    const auto hit = boundary_->closest_point_and_primitive(cgal(guess));
-    const auto [a, b] = ends_[static_cast<std::size_t>(hit.second - segments_.cbegin())];
-    const Vec3 p = eigen(hit.first);
+    if (boundary_.empty()) return on_surface(guess);
+    const auto [p, segment] = boundary_.closest(guess);
+    const auto [a, b] = ends_[static_cast<std::size_t>(segment)];
     const Vec3 ab = point(b) - point(a);
     const double t = std::clamp((p - point(a)).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
     const EdgeCorner e = adjacency_.find(a, b);
@@ -128,9 +110,8 @@ class Placement {
   const TriangleSoup& s_;
   const SurfaceAdjacency& adjacency_;
   const TriangleTree& surface_;
-  std::vector<Segment3> segments_;
-  std::vector<std::pair<int, int>> ends_;
-  std::unique_ptr<SegmentTree> boundary_;
+  std::vector<std::pair<int, int>> ends_;  ///< per boundary segment, its two vertices
+  SegmentTree boundary_;
 };
 
 double length(const LatticeQuads& q, const Quad& c, int i) {

@@ -2,6 +2,7 @@
 
 #include "libquadmesh/core/error.h"
 
+#include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
@@ -15,7 +16,12 @@ using Triangle3 = K::Triangle_3;
 using Primitive = CGAL::AABB_triangle_primitive<K, std::vector<Triangle3>::const_iterator>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
 
+using Segment3 = K::Segment_3;
+using SegmentPrimitive = CGAL::AABB_segment_primitive<K, std::vector<Segment3>::const_iterator>;
+using SegmentAabb = CGAL::AABB_tree<CGAL::AABB_traits<K, SegmentPrimitive>>;
+
 K::Point_3 cgal(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
+Vec3 eigen(const K::Point_3& p) { return {p.x(), p.y(), p.z()}; }
 }  // namespace
 
 struct TriangleTree::Impl {
@@ -56,13 +62,42 @@ bool TriangleTree::empty() const { return impl_->triangles.empty(); }
 std::pair<Vec3, int> TriangleTree::closest(const Vec3& p) const {
   QM_ASSERT(impl_->tree && !empty());
   const auto hit = impl_->tree->closest_point_and_primitive(cgal(p));
-  return {Vec3(hit.first.x(), hit.first.y(), hit.first.z()),
+  return {eigen(hit.first),
           impl_->ids[static_cast<std::size_t>(hit.second - impl_->triangles.cbegin())]};
 }
 
 double TriangleTree::squared_distance(const Vec3& p) const {
   QM_ASSERT(impl_->tree && !empty());
   return impl_->tree->squared_distance(cgal(p));
+}
+
+struct SegmentTree::Impl {
+  std::vector<Segment3> segments;
+  std::vector<int> ids;
+  std::unique_ptr<SegmentAabb> tree;
+};
+
+SegmentTree::SegmentTree() : impl_(std::make_unique<Impl>()) {}
+SegmentTree::~SegmentTree() = default;
+SegmentTree::SegmentTree(SegmentTree&&) noexcept = default;
+SegmentTree& SegmentTree::operator=(SegmentTree&&) noexcept = default;
+
+void SegmentTree::add(const Vec3& a, const Vec3& b, int id) {
+  impl_->segments.emplace_back(cgal(a), cgal(b));
+  impl_->ids.push_back(id);
+}
+
+void SegmentTree::build() {
+  impl_->tree = std::make_unique<SegmentAabb>(impl_->segments.cbegin(), impl_->segments.cend());
+  impl_->tree->accelerate_distance_queries();
+}
+
+bool SegmentTree::empty() const { return impl_->segments.empty(); }
+
+std::pair<Vec3, int> SegmentTree::closest(const Vec3& p) const {
+  QM_ASSERT(impl_->tree && !empty());
+  const auto hit = impl_->tree->closest_point_and_primitive(cgal(p));
+  return {eigen(hit.first), impl_->ids[static_cast<std::size_t>(hit.second - impl_->segments.cbegin())]};
 }
 
 }  // namespace qm

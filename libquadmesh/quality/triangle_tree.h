@@ -1,5 +1,6 @@
-// Closest points on a set of 3D triangles (a CGAL AABB tree): the distance queries
-// of the Hausdorff estimate and of the quad refinement's deviation and placement.
+// Closest points on a set of 3D triangles or segments (CGAL AABB trees): the
+// distance queries of the Hausdorff estimate and of the quad refinement's
+// deviation and placement (on S, and on S's boundary polylines).
 #pragma once
 
 #include "libquadmesh/core/triangle_soup.h"
@@ -29,6 +30,27 @@ class TriangleTree {
   /// The closest point on the triangles and the id of its triangle (not empty()).
   std::pair<Vec3, int> closest(const Vec3& p) const;
   double squared_distance(const Vec3& p) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// The same for segments (a boundary polyline: segment k from a to b).
+class SegmentTree {
+ public:
+  SegmentTree();
+  ~SegmentTree();
+  SegmentTree(SegmentTree&&) noexcept;
+  SegmentTree& operator=(SegmentTree&&) noexcept;
+
+  /// Adds a segment with the caller's id. Call build() after the last.
+  void add(const Vec3& a, const Vec3& b, int id);
+  void build();
+
+  bool empty() const;
+  /// The closest point on the segments and the id of its segment (not empty()).
+  std::pair<Vec3, int> closest(const Vec3& p) const;
 
  private:
   struct Impl;
