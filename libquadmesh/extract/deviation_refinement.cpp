@@ -122,10 +122,13 @@ double length(const LatticeQuads& q, const Quad& c, int i) {
 
 double max_of(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end()); }
 
-/// Quads with a corner whose scaled Jacobian (the quality module's) is <= 0.
-std::size_t inverted_quads(const LatticeQuads& quads) {
+/// The quads with a corner whose scaled Jacobian (the quality module's) is <= 0, and
+/// the smallest scaled Jacobian.
+std::pair<std::size_t, double> inverted_quads(const LatticeQuads& quads) {
   const std::vector<double> jacobians = quad_shape_samples(polygon_mesh(quads)).scaled_jacobian;
-  return static_cast<std::size_t>(std::count_if(jacobians.begin(), jacobians.end(), [](double j) { return j <= 0; }));
+  const auto inverted =
+      static_cast<std::size_t>(std::count_if(jacobians.begin(), jacobians.end(), [](double j) { return j <= 0; }));
+  return {inverted, jacobians.empty() ? 1.0 : *std::min_element(jacobians.begin(), jacobians.end())};
 }
 
 }  // namespace
@@ -217,9 +220,12 @@ DeviationRefinementReport refine_to_deviation(const TriangleSoup& surface,
   report.deviation_before = max_of(dev);
   const std::size_t start = quads.quads.size();
   // a new point is placed on S by closest point; on a thin or sharply curved part
-  // that point can fall where the split quads turn over: such a round is undone and
-  // the refinement stops there
-  std::size_t inverted = inverted_quads(quads);
+  // that point can fall where the split quads turn over or get thin: a round that
+  // turns a quad over, or takes the smallest scaled Jacobian below both its value
+  // before the refinement and the usual 0.3 floor, is undone and the refinement
+  // stops there
+  auto [inverted, min_jacobian] = inverted_quads(quads);
+  const double jacobian_floor = std::min(min_jacobian, options.min_scaled_jacobian);
   auto round = [&](double threshold, std::size_t max_quads) {
     const LatticeQuads before = quads;
     const std::vector<int> loops_before = boundary_loop_of_point;
@@ -227,8 +233,8 @@ DeviationRefinementReport refine_to_deviation(const TriangleSoup& surface,
     const std::size_t chosen =
         split_round(placement, index, samples, quads, boundary_loop_of_point, dev, threshold, max_quads);
     if (chosen == 0) return false;
-    const std::size_t now = inverted_quads(quads);
-    if (now > inverted) {
+    const auto [now, jacobian] = inverted_quads(quads);
+    if (now > inverted || jacobian < jacobian_floor) {
       quads = before;
       boundary_loop_of_point = loops_before;
       dev = dev_before;

@@ -25,6 +25,9 @@ struct DeviationRefinementOptions {
   /// of the largest deviation are split (one round at a time, within min_quads):
   /// what is left of a budget goes to the largest deviations. 0: none.
   std::size_t min_quads = 0;
+  /// A round may not take the smallest scaled Jacobian below this (or below its
+  /// value before the refinement, when that is lower).
+  double min_scaled_jacobian = 0.3;
 };
 
 struct DeviationRefinementReport {
@@ -34,7 +37,7 @@ struct DeviationRefinementReport {
   std::size_t quads_added = 0;
   int rounds = 0;
   bool tolerance_met = false;   ///< after the rounds within max_quads (before the min_quads rounds)
-  int rounds_undone = 0;        ///< a round that turned a quad over is undone, and the refinement stops
+  int rounds_undone = 0;        ///< a round that turned a quad over (or too thin) is undone, and the refinement stops
 };
 
 /// Per quad, the estimated deviation: the largest distance from a sample of the quad
