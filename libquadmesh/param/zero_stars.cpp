@@ -48,10 +48,6 @@ void split_edge(TriangleSoup& soup, std::vector<FaceMap*>& maps, int a, int b) {
   soup.cad.edges.insert(soup.cad.edges.end(), split.begin(), split.end());
 }
 
-namespace {
-
-/// Vertices within `radius` of `source` in the image metric of `map` (edge length
-/// |map(e)|), with their distances.
 std::unordered_map<int, double> image_ball(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                                            const FaceMap& map, int source, double radius) {
   std::unordered_map<int, double> distance{{source, 0.0}};
@@ -80,8 +76,6 @@ std::unordered_map<int, double> image_ball(const TriangleSoup& soup, const Surfa
   }
   return distance;
 }
-
-}  // namespace
 
 std::vector<ZeroVertex> merge_close_zeros(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                                           const FaceMap& map, std::vector<ZeroVertex> zeros, double radius) {

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cmath>
+#include <unordered_map>
 
 #include "libquadmesh/param/face_map.h"
 #include "libquadmesh/param/surface_adjacency.h"
@@ -27,6 +28,11 @@ struct ZeroVertex {
   /// The total image angle: 2 pi (m + 1) inside, pi (m + 1) on the boundary.
   double image_angle() const { return (on_boundary ? M_PI : 2 * M_PI) * (order + 1); }
 };
+
+/// The vertices within `radius` of `source` in the image metric of `map` (shortest
+/// paths along edges, edge length |map(e)|), with their distances; `source` at 0.
+std::unordered_map<int, double> image_ball(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                           const FaceMap& map, int source, double radius);
 
 /// Zeros closer than `radius` in the image of `map` (shortest paths along edges,
 /// edge length |map(e)|) cannot be separated by the grid (two zeros of one boundary

@@ -253,25 +253,42 @@ QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, con
       loops.handles = named.handles;
     }
     r.quantization = quantize(soup, adjacency, target, basis, r.zero_vertices, loops);
-    const auto unsafe = std::count_if(r.quantization.param.corners.begin(), r.quantization.param.corners.end(),
-                                      [](const CornerValues& c) { return !safely_positive(c); });
-    if (unsafe > 0) {
-      stages.next("untangling", fmt::format("untangling {} folded or nearly flat triangles", unsafe));
-      std::vector<char> pinned(soup.points.size(), 0);
-      for (const ZeroVertex& z : r.zero_vertices) pinned[static_cast<std::size_t>(z.vertex)] = 1;
-      for (const ZeroVertex& z : r.zero_vertices) {
-        // the cone's and its model star (fold-free by construction; an average
-        // cannot reproduce an image angle other than 2 pi)
-        for (int v : vertex_ring(soup, adjacency, z.vertex).neighbours) if (!pinned[static_cast<std::size_t>(v)]) pinned[static_cast<std::size_t>(v)] = 2;
-      }
-      // all the vertices around the folds at once; what that leaves, one at a time
-      r.untangle = untangle_by_barrier(soup, adjacency, r.quantization.param, pinned);
-      if (r.untangle.flipped_after > 0) {
+    auto unsafe = [&] {
+      return std::count_if(r.quantization.param.corners.begin(), r.quantization.param.corners.end(),
+                           [](const CornerValues& c) { return !safely_positive(c); });
+    };
+    std::vector<char> pinned(soup.points.size(), 0);
+    for (const ZeroVertex& z : r.zero_vertices) pinned[static_cast<std::size_t>(z.vertex)] = 1;
+    for (const ZeroVertex& z : r.zero_vertices) {
+      // the cone's and its model star (fold-free by construction; an average
+      // cannot reproduce an image angle other than 2 pi)
+      for (int v : vertex_ring(soup, adjacency, z.vertex).neighbours)
+        if (!pinned[static_cast<std::size_t>(v)]) pinned[static_cast<std::size_t>(v)] = 2;
+    }
+    // all the vertices around the folds at once; what that leaves, one at a time
+    auto untangle_folds = [&](UntangleReport& report) {
+      report = untangle_by_barrier(soup, adjacency, r.quantization.param, pinned);
+      if (report.flipped_after > 0) {
         const UntangleReport local = untangle(soup, adjacency, r.quantization.param, pinned);
-        r.untangle.flipped_after = local.flipped_after;
-        r.untangle.moved_vertices += local.moved_vertices;
-        r.untangle.rounds += local.rounds;
+        report.flipped_after = local.flipped_after;
+        report.moved_vertices += local.moved_vertices;
+        report.rounds += local.rounds;
       }
+    };
+    if (const auto folds = unsafe(); folds > 0) {
+      stages.next("untangling", fmt::format("untangling {} folded or nearly flat triangles", folds));
+      untangle_folds(r.untangle);
+      // the untangled map may branch beside a cone rather than at it
+      r.branch_points = snap_hidden_cones(soup, adjacency, r.quantization.param, r.zero_vertices, pinned);
+      if (r.branch_points.snapped > 0 && unsafe() > 0) {
+        UntangleReport again;
+        untangle_folds(again);
+        r.untangle.flipped_after = again.flipped_after;
+        r.untangle.moved_vertices += again.moved_vertices;
+        r.untangle.rounds += again.rounds;
+      }
+      if (r.branch_points.hidden > 0)
+        r.zero_vertices = mapped_cones(soup, adjacency, r.quantization.param, r.zero_vertices);
     }
 
     if (options.rotate)  // i h: a quarter turn of the plane maps the lattice onto itself

@@ -6,6 +6,7 @@
 #include "libquadmesh/extract/deviation_refinement.h"
 #include "libquadmesh/extract/lattice_quads.h"
 #include "libquadmesh/forms/symmetric_forms.h"
+#include "libquadmesh/param/branch_points.h"
 #include "libquadmesh/param/map_zeros.h"
 #include "libquadmesh/param/quantization.h"
 #include "libquadmesh/param/untangle.h"
@@ -65,6 +66,7 @@ struct QuadMeshResult {
   std::size_t chords_split = 0, star_splits = 0;
   Quantization quantization;     ///< with the parameterization (after untangling)
   UntangleReport untangle;       ///< the local repair of folds left by the quantization
+  SnapReport branch_points;      ///< vertices the untangled map branched at, off the cones, moved onto the lattice
   ExtractionReport extraction;
   double base_density = 1.0;     ///< the base lattice's quad count as a fraction of the target (< 1: coarsened)
   double max_deviation = 0.0;    ///< the tolerance used (0: refinement off)

@@ -3,6 +3,8 @@
 #include "tests/support/test_meshes.h"
 
 #include <doctest/doctest.h>
+
+#include <cstdlib>
 #include <nlohmann/json.hpp>
 
 #include <sys/wait.h>
@@ -152,7 +154,7 @@ TEST_CASE("mesh: pure quads with the input's topology, quality and groups (plate
 }
 
 TEST_CASE("mesh: inverted quads are written, with one warning line that names the first, even with -q") {
-  // bunny-open at 1.2% without refinement: one boundary quad turns over where the
+  // bunny-open at 1.2% without refinement: boundary quads turn over where the
   // scan's hole boundary zigzags back on itself
   const std::string dir = test::scratch_dir("cli_inverted");
   const std::string output = dir + "/out.msh";
@@ -163,21 +165,21 @@ TEST_CASE("mesh: inverted quads are written, with one warning line that names th
   CHECK(run.out.find("inverted)") != std::string::npos);
   const auto lines = run.error_lines();
   REQUIRE(lines.size() == 1);
-  CHECK(lines[0].rfind("quadmesh: warning: 1 inverted quads (min scaled Jacobian -", 0) == 0);
+  CHECK(lines[0].rfind("quadmesh: warning: ", 0) == 0);
+  CHECK(std::atoi(lines[0].c_str() + std::string("quadmesh: warning: ").size()) >= 1);
+  CHECK(lines[0].find(" inverted quads (min scaled Jacobian -") != std::string::npos);
   CHECK(lines[0].find("the first near (") != std::string::npos);
 }
 
 TEST_CASE("mesh: cells the extraction drops leave a gap, written with one warning line that names the first") {
-  // a flat plate with five holes: an interior zero on the level of a hole's
-  // boundary becomes a boundary zero of order 2 there, and the two sheets of one
-  // cell beside it are joined (area 2): the cell is dropped (a known defect)
+  // a long plate with two holes: at two of its corners the untangling leaves a
+  // fold (a known defect), and the cells over it are dropped
   const std::string dir = test::scratch_dir("cli_dropped");
   {
     std::ofstream geo(dir + "/plate.geo");
-    geo << "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 150, 80};\n"
-           "Disk(2) = {20, 20, 0, 5};\nDisk(3) = {50, 60, 0, 12};\nDisk(4) = {90, 25, 0, 8};\n"
-           "Disk(5) = {125, 60, 0, 4};\nDisk(6) = {130, 15, 0, 6};\n"
-           "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:6}; Delete; }\n";
+    geo << "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 200, 60};\n"
+           "Disk(2) = {115.97, 20.70, 0, 6.39};\nDisk(3) = {84.93, 23.99, 0, 3.03};\n"
+           "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:3}; Delete; }\n";
   }
   const std::string output = dir + "/out.msh", report = dir + "/report.json";
   const Run run = quadmesh("mesh " + quoted(dir + "/plate.geo") + " -o " + quoted(output) + " --size 1.5% -q --report " +

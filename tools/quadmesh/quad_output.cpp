@@ -141,7 +141,9 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
                        {"flipped_triangles", qz.flipped},
                        {"untangled", {{"flipped_before", result.untangle.flipped_before},
                                       {"flipped_after", result.untangle.flipped_after},
-                                      {"moved_vertices", result.untangle.moved_vertices}}}};
+                                      {"moved_vertices", result.untangle.moved_vertices}}},
+                       {"branch_points", {{"off_the_cones", result.branch_points.hidden},
+                                          {"moved_onto_lattice", result.branch_points.snapped}}}};
   const ExtractionReport& x = result.extraction;
   j["extraction"] = {{"cells", x.cells},
                      {"incomplete_cells", x.incomplete_cells},
