@@ -129,7 +129,8 @@ struct ConeDisk {
 /// a fitted to the target in least squares (real on the boundary, which keeps it
 /// horizontal). For a zero of order m inside, W = (x + iy)^(m+1): fold-free.
 ConeDisk cone_disk(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const FaceMap& xi,
-                   const ZeroVertex& cone, const std::vector<char>& constrained, const Complex* fixed_a) {
+                   const ZeroVertex& cone, const std::vector<char>& constrained, const Complex* fixed_a,
+                   double radius = disk_radius) {
   const int c = cone.vertex;
   const VertexRing ring = vertex_ring(soup, adjacency, c);
   std::unordered_map<int, Complex> reach{{c, Complex(0, 0)}};
@@ -146,7 +147,7 @@ ConeDisk cone_disk(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, 
         for (int v : soup.triangles[static_cast<std::size_t>(f)]) {
           if (reach.count(v) || constrained[static_cast<std::size_t>(v)]) continue;
           const Complex at = reach[u] + edge_value(adjacency, xi, u, v);
-          if (std::abs(at) > disk_radius) continue;
+          if (std::abs(at) > radius) continue;
           reach[v] = at;
           order.push_back(v);
           next.push_back(v);
@@ -217,7 +218,7 @@ ConeDisk cone_disk(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, 
     // pure model on the star, blending smoothly into the target towards the rim;
     // a corner's whole disk is the target translated (the target's image angle at a
     // corner is already pi and not folded: it needs no bending there)
-    const double rho = std::abs(reach[order[k]]) / disk_radius;
+    const double rho = std::abs(reach[order[k]]) / radius;
     double beta = cone.corner ? 1.0 : k < star ? 0.0 : std::clamp((rho - 0.25) / 0.75, 0.0, 1.0);
     beta = beta * beta * (3 - 2 * beta);
     disk.vertices.push_back(order[k]);
@@ -492,7 +493,13 @@ Quantization quantize(const TriangleSoup& soup, const SurfaceAdjacency& adjacenc
     placed_a.push_back(disk.a);
   }
   for (std::size_t c = 0; c < placed.size(); ++c) {
-    const ConeDisk disk = cone_disk(soup, adjacency, xi, *placed[c], constrained, &placed_a[c]);
+    // the disks of two cones closer than two radii would overlap: each takes its half
+    // (a vertex of two disks would follow the cone met first, and the other cone's
+    // star would sit in a translated neighbourhood: folds)
+    double radius = disk_radius;
+    for (const auto& [v, d] : image_ball(soup, adjacency, xi, placed[c]->vertex, 2 * disk_radius))
+      if (v != placed[c]->vertex && is_cone[static_cast<std::size_t>(v)]) radius = std::min(radius, 0.5 * d);
+    const ConeDisk disk = cone_disk(soup, adjacency, xi, *placed[c], constrained, &placed_a[c], radius);
     apply(disk, placed_psi[c], 0, disk.vertices.size());
   }
   if (fixed_u.empty()) fixed_u[base] = 0.0;
