@@ -48,13 +48,27 @@ std::vector<Vec3> surface_samples(const std::vector<Vec3>& points,
   return samples;
 }
 
-double max_distance_to_surface(const std::vector<Vec3>& samples, const std::vector<Vec3>& points,
+FarthestSample farthest_sample(const std::vector<Vec3>& samples, const std::vector<Vec3>& points,
                                const std::vector<Triangle>& triangles) {
   const TriangleTree tree(points, triangles);
-  if (tree.empty() || samples.empty()) return std::numeric_limits<double>::quiet_NaN();
-  double worst = 0;
-  for (const Vec3& s : samples) worst = std::max(worst, tree.squared_distance(s));
-  return std::sqrt(worst);
+  FarthestSample far;
+  if (tree.empty() || samples.empty()) {
+    far.distance = std::numeric_limits<double>::quiet_NaN();
+    return far;
+  }
+  double worst = -1;
+  for (const Vec3& s : samples)
+    if (const double d = tree.squared_distance(s); d > worst) {
+      worst = d;
+      far.point = s;
+    }
+  far.distance = std::sqrt(worst);
+  return far;
+}
+
+double max_distance_to_surface(const std::vector<Vec3>& samples, const std::vector<Vec3>& points,
+                               const std::vector<Triangle>& triangles) {
+  return farthest_sample(samples, points, triangles).distance;
 }
 
 HausdorffDistance two_sided_hausdorff(const std::vector<Vec3>& points_a,

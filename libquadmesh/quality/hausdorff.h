@@ -34,9 +34,19 @@ std::vector<Vec3> surface_samples(const std::vector<Vec3>& points,
                                   const std::vector<Triangle>& triangles,
                                   const HausdorffOptions& options = {});
 
+/// The sample farthest from a surface, and its distance.
+struct FarthestSample {
+  double distance = 0;  ///< NaN when there is no triangle or no sample
+  Vec3 point = Vec3::Zero();
+};
+
+/// The sample of `samples` farthest from the surface (`points`, `triangles`).
+/// Degenerate (zero-area) triangles are skipped.
+FarthestSample farthest_sample(const std::vector<Vec3>& samples, const std::vector<Vec3>& points,
+                               const std::vector<Triangle>& triangles);
+
 /// The largest distance from one of `samples` to the surface (`points`,
-/// `triangles`). Degenerate (zero-area) triangles are skipped; NaN when no
-/// triangle is left or there is no sample.
+/// `triangles`): farthest_sample(...).distance.
 double max_distance_to_surface(const std::vector<Vec3>& samples, const std::vector<Vec3>& points,
                                const std::vector<Triangle>& triangles);
 

@@ -367,10 +367,13 @@ QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference)
         centroid += point(v);
       samples.push_back(centroid / static_cast<double>(face.size()));
     }
+    const FarthestSample forward = farthest_sample(samples, reference->points, reference->triangles);
+    const FarthestSample backward =
+        farthest_sample(surface_samples(reference->points, reference->triangles), mesh.points, split);
     HausdorffDistance h;
-    h.forward = max_distance_to_surface(samples, reference->points, reference->triangles);
-    h.backward = max_distance_to_surface(surface_samples(reference->points, reference->triangles),
-                                         mesh.points, split);
+    h.forward = forward.distance;
+    h.backward = backward.distance;
+    q.hausdorff_at = h.forward >= h.backward ? forward.point : backward.point;
     const double diagonal = bounding_box_diagonal(reference->points, reference->triangles);
     if (diagonal > 0) {
       q.hausdorff_forward_rel = h.forward / diagonal;

@@ -77,6 +77,7 @@ struct QuadQuality {
   double hausdorff_rel = 0;           ///< max(forward, backward) / diagonal
   double hausdorff_forward_rel = 0;   ///< farthest mesh sample from the reference / diagonal
   double hausdorff_backward_rel = 0;  ///< farthest reference sample from the mesh / diagonal
+  Vec3 hausdorff_at = Vec3::Zero();   ///< the sample (of the mesh or the reference) at that distance
 };
 
 /// The per-element values behind QuadQuality's shape statistics, for histograms:

@@ -285,6 +285,12 @@ TEST_CASE("Hausdorff distance: own triangulation, shifted copy, a larger referen
     CHECK(q.hausdorff_forward_rel < 1e-12);
     CHECK(std::abs(q.hausdorff_backward_rel - 0.5) < 1e-9);
     CHECK(std::abs(q.hausdorff_rel - 0.5) < 1e-9);
+    // and where: that corner (a vertex of the reference, hence a sample)
+    CHECK((q.hausdorff_at - Vec3(2 * n, 2 * m, 0)).norm() < 1e-12);
+    const FarthestSample far = farthest_sample({Vec3(1, 1, 0), Vec3(2 * n, 2 * m, 0), Vec3(n + 1, 0, 0)},
+                                               grid.points, triangulated(grid, false).triangles);
+    CHECK(far.point == Vec3(2 * n, 2 * m, 0));
+    CHECK(std::abs(far.distance - std::sqrt(double(n * n + m * m))) < 1e-12);
   }
 }
 

@@ -57,6 +57,7 @@ Json quality_json(const QuadQuality& q) {
   j["hausdorff_rel"] = number(q.hausdorff_rel);
   j["hausdorff_forward_rel"] = number(q.hausdorff_forward_rel);
   j["hausdorff_backward_rel"] = number(q.hausdorff_backward_rel);
+  if (!std::isnan(q.hausdorff_rel)) j["hausdorff_at"] = {q.hausdorff_at.x(), q.hausdorff_at.y(), q.hausdorff_at.z()};
   return j;
 }
 

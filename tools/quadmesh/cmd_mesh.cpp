@@ -1,5 +1,6 @@
 #include "io/write_mesh.h"
 #include "libquadmesh/pipeline/mesh_quads.h"
+#include "libquadmesh/quality/hausdorff.h"
 #include "libquadmesh/quality/quad_quality.h"
 #include "tools/common/exit_codes.h"
 #include "tools/common/input_surface.h"
@@ -76,6 +77,24 @@ void warn_if_inverted(const MeshSummary& s, const QuadMeshResult& r) {
              "{:.6g}); a solver will reject them: try another --size or --form\n",
              s.quality.inverted, s.quality.min_scaled_jacobian, c.x(), c.y(), c.z());
 }
+
+/// Quads farther from the input than the refinement's tolerance: where the form is
+/// small (a protrusion, a long end) its quads are larger than the size asked, and
+/// the chords the budget allows did not bring them close. One warning line, even
+/// with --quiet, naming the farthest place (quality module: two-sided Hausdorff).
+void warn_if_far(const MeshSummary& s, const QuadMeshResult& r, double diagonal) {
+  const double distance = s.quality.hausdorff_rel * diagonal;
+  if (r.max_deviation <= 0 || !(distance > 1.25 * r.max_deviation)) return;
+  const Vec3& p = s.quality.hausdorff_at;
+  const bool gap = r.extraction.incomplete_cells + r.extraction.degenerate_cells > 0;
+  fmt::print(stderr,
+             "quadmesh: warning: the quads are up to {:.3g} ({:.2g}% of the diagonal) from the surface, near ({:.6g}, "
+             "{:.6g}, {:.6g}), against {:.3g} asked (--max-deviation): {}the differential is small there (a "
+             "protrusion or a long end), so its quads are larger than --size; try another --form or a smaller "
+             "--size\n",
+             distance, 100 * s.quality.hausdorff_rel, p.x(), p.y(), p.z(), r.max_deviation,
+             gap ? "the gap above, or " : "");
+}
 }  // namespace
 
 int run_mesh(const MeshOptions& options, const CommonOptions& common) {
@@ -114,6 +133,7 @@ int run_mesh(const MeshOptions& options, const CommonOptions& common) {
   print_summary(summary);
   warn_if_cells_dropped(result);
   warn_if_inverted(summary, result);
+  warn_if_far(summary, result, bounding_box_diagonal(in.surface.soup.points, in.surface.soup.triangles));
   return exit_ok;
 }
 
