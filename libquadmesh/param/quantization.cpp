@@ -497,8 +497,9 @@ Quantization quantize(const TriangleSoup& soup, const SurfaceAdjacency& adjacenc
     // (a vertex of two disks would follow the cone met first, and the other cone's
     // star would sit in a translated neighbourhood: folds)
     double radius = disk_radius;
-    for (const auto& [v, d] : image_ball(soup, adjacency, xi, placed[c]->vertex, 2 * disk_radius))
-      if (v != placed[c]->vertex && is_cone[static_cast<std::size_t>(v)]) radius = std::min(radius, 0.5 * d);
+    const auto cone_at = [&](int v) { return is_cone[static_cast<std::size_t>(v)] != 0; };
+    for (const auto& [v, d] : image_ball(soup, adjacency, xi, placed[c]->vertex, 2 * disk_radius, cone_at))
+      if (v != placed[c]->vertex && cone_at(v)) radius = std::min(radius, 0.5 * d);
     const ConeDisk disk = cone_disk(soup, adjacency, xi, *placed[c], constrained, &placed_a[c], radius);
     apply(disk, placed_psi[c], 0, disk.vertices.size());
   }

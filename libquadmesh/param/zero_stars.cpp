@@ -50,6 +50,12 @@ void split_edge(TriangleSoup& soup, std::vector<FaceMap*>& maps, int a, int b) {
 
 std::unordered_map<int, double> image_ball(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                                            const FaceMap& map, int source, double radius) {
+  return image_ball(soup, adjacency, map, source, radius, [](int) { return false; });
+}
+
+std::unordered_map<int, double> image_ball(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                           const FaceMap& map, int source, double radius,
+                                           const std::function<bool(int)>& stop_at) {
   std::unordered_map<int, double> distance{{source, 0.0}};
   using Item = std::pair<double, int>;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
@@ -58,6 +64,7 @@ std::unordered_map<int, double> image_ball(const TriangleSoup& soup, const Surfa
     const auto [d, u] = queue.top();
     queue.pop();
     if (d > distance[u]) continue;
+    if (u != source && stop_at(u)) break;
     for (int f : adjacency.vertex_faces[static_cast<std::size_t>(u)]) {
       const Triangle& t = soup.triangles[static_cast<std::size_t>(f)];
       int k = 0;

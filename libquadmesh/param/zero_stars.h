@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cmath>
+#include <functional>
 #include <unordered_map>
 
 #include "libquadmesh/param/face_map.h"
@@ -33,6 +34,12 @@ struct ZeroVertex {
 /// paths along edges, edge length |map(e)|), with their distances; `source` at 0.
 std::unordered_map<int, double> image_ball(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                                            const FaceMap& map, int source, double radius);
+
+/// The same, grown in order of distance until a vertex (other than `source`) for
+/// which `stop_at` is true is reached: that vertex is the last one settled.
+std::unordered_map<int, double> image_ball(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                           const FaceMap& map, int source, double radius,
+                                           const std::function<bool(int)>& stop_at);
 
 /// Zeros closer than `radius` in the image of `map` (shortest paths along edges,
 /// edge length |map(e)|) cannot be separated by the grid (two zeros of one boundary
