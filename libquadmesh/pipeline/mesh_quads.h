@@ -72,6 +72,10 @@ struct QuadMeshResult {
   double max_deviation = 0.0;    ///< the tolerance used (0: refinement off)
   DeviationRefinementReport refinement;
   std::vector<std::pair<std::string, double>> timings;  ///< seconds per stage
+  /// Edges of the input longer than the target size, split (forms/long_edges.h);
+  /// when > 0 the input as it is was meshed too, and the better result kept.
+  std::size_t long_edges_split = 0;
+  bool long_edges_kept = false;  ///< the result is the split input's
 };
 
 using ProgressCallback = std::function<void(const std::string&)>;

@@ -214,6 +214,20 @@ TEST_CASE("pig: the folds near its cones are untangled, the extraction drops no 
   CHECK(qr.min_scaled_jacobian >= std::min(q.min_scaled_jacobian, 0.3));
 }
 
+TEST_CASE("flatmesh: triangles wider than the quads are split, and the better of the two meshes kept") {
+  // its longest edges are 3 quads long (0.1 to 1.16 around a size of 0.38): one
+  // linear map per triangle across several quads, mean angle deviation 5.28 degrees
+  const TriangleSoup input = analysed(test::shared_mesh("flatmesh.off"));
+  QuadMeshOptions options;
+  options.size_relative = 0.015;
+  const QuadMeshResult r = mesh_quads(input, options);
+  CHECK(r.long_edges_split > 0);
+  CHECK(r.long_edges_kept);
+  CHECK(r.surface.points.size() > input.points.size());
+  check_result(input, r, -3, 5);
+  CHECK(r.timings.front().first == "other_triangulation");
+}
+
 TEST_CASE("kitten with two holes: genus 1, two zeros of order 1") {
   const TriangleSoup input = analysed(test::shared_mesh("kitten-2holes.obj"));
   QuadMeshOptions options;

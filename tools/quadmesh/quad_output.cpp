@@ -153,6 +153,8 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
                      {"chords_split", result.chords_split},
                      {"zero_star_splits", result.star_splits}};
   const DeviationRefinementReport& rf = result.refinement;
+  j["long_edges"] = {{"split", result.long_edges_split},
+                     {"kept", result.long_edges_split == 0 ? "none split" : result.long_edges_kept ? "split" : "input"}};
   j["refinement"] = {{"enabled", result.max_deviation > 0},
                      {"max_deviation", result.max_deviation},
                      {"base_density", result.base_density},

@@ -1,0 +1,83 @@
+#include "libquadmesh/forms/long_edges.h"
+
+#include "libquadmesh/core/error.h"
+#include "libquadmesh/topology/edge_incidence.h"
+
+#include <algorithm>
+#include <map>
+#include <utility>
+
+namespace qm {
+
+namespace {
+
+double length(const TriangleSoup& soup, int a, int b) {
+  return (soup.points[static_cast<std::size_t>(a)] - soup.points[static_cast<std::size_t>(b)]).norm();
+}
+
+/// The side k (from corner k to k + 1) of triangle t that is longest.
+int longest_side(const TriangleSoup& soup, const Triangle& t) {
+  int best = 0;
+  for (int k = 1; k < 3; ++k)
+    if (length(soup, t[k], t[(k + 1) % 3]) > length(soup, t[best], t[(best + 1) % 3])) best = k;
+  return best;
+}
+
+}  // namespace
+
+std::size_t split_long_edges(TriangleSoup& soup, double max_length) {
+  QM_ASSERT(max_length > 0);
+  if (!soup.point_labels.empty()) soup.point_labels.resize(soup.points.size(), -1);
+  std::size_t splits = 0;
+  for (;;) {
+    const EdgeIncidence inc = edge_incidence(soup);
+    // the longest side of each triangle that is too long, longest first
+    std::vector<std::pair<double, int>> wanted;
+    for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
+      const int k = longest_side(soup, soup.triangles[f]);
+      const int h = static_cast<int>(3 * f) + k;
+      const double l = length(soup, halfedge_source(soup, h), halfedge_target(soup, h));
+      if (l > max_length) wanted.push_back({l, inc.halfedge_edge[static_cast<std::size_t>(h)]});
+    }
+    if (wanted.empty()) return splits;
+    std::sort(wanted.begin(), wanted.end(), std::greater<>());
+    std::map<std::pair<int, int>, std::size_t> curve_edge;
+    for (std::size_t i = 0; i < soup.cad.edges.size(); ++i)
+      curve_edge[std::minmax(soup.cad.edges[i].a, soup.cad.edges[i].b)] = i;
+    std::vector<char> touched(soup.triangles.size(), 0);
+    std::size_t pass = 0;
+    for (const auto& [l, e] : wanted) {
+      if (e < 0) continue;
+      bool free = true;
+      for (int i = inc.offsets[static_cast<std::size_t>(e)]; i < inc.offsets[static_cast<std::size_t>(e) + 1]; ++i)
+        free = free && !touched[static_cast<std::size_t>(inc.halfedges[static_cast<std::size_t>(i)] / 3)];
+      if (!free) continue;  // next pass
+      const auto [a, b] = inc.edges[static_cast<std::size_t>(e)];
+      const int m = static_cast<int>(soup.points.size());
+      soup.points.push_back((soup.points[static_cast<std::size_t>(a)] + soup.points[static_cast<std::size_t>(b)]) / 2);
+      if (!soup.point_labels.empty()) soup.point_labels.push_back(-1);
+      for (int i = inc.offsets[static_cast<std::size_t>(e)]; i < inc.offsets[static_cast<std::size_t>(e) + 1]; ++i) {
+        const int h = inc.halfedges[static_cast<std::size_t>(i)];
+        const auto f = static_cast<std::size_t>(h / 3);
+        const int k = h % 3;
+        const Triangle t = soup.triangles[f];
+        const int x = t[static_cast<std::size_t>(k)], y = t[static_cast<std::size_t>((k + 1) % 3)],
+                  c = t[static_cast<std::size_t>((k + 2) % 3)];
+        soup.triangles[f] = {x, m, c};
+        soup.triangles.push_back({m, y, c});
+        if (!soup.triangle_labels.empty()) soup.triangle_labels.push_back(soup.triangle_labels[f]);
+        touched[f] = 1;
+        touched.push_back(1);
+      }
+      if (const auto it = curve_edge.find(std::minmax(a, b)); it != curve_edge.end()) {
+        const CurveEdge whole = soup.cad.edges[it->second];
+        soup.cad.edges[it->second] = CurveEdge{whole.a, m, whole.curve};
+        soup.cad.edges.push_back(CurveEdge{m, whole.b, whole.curve});
+      }
+      ++pass;
+    }
+    splits += pass;
+  }
+}
+
+}  // namespace qm
