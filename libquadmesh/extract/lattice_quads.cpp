@@ -156,9 +156,16 @@ LatticeQuads extract_lattice_quads(const TriangleSoup& soup, const SurfaceAdjace
       q[f][static_cast<std::size_t>(i)] =
           reference[v] + P2{static_cast<I64>(dx) * lattice_scale, static_cast<I64>(dy) * lattice_scale};
     }
+  // a triangle is used when positive and not absurdly large (a map blown up by a
+  // failed repair would otherwise have its lattice enumerated cell by cell)
+  auto cells_spanned = [&](const std::array<P2, 3>& t) {
+    const auto [k0, k1] = cell_range(std::min({t[0].x, t[1].x, t[2].x}), std::max({t[0].x, t[1].x, t[2].x}));
+    const auto [l0, l1] = cell_range(std::min({t[0].y, t[1].y, t[2].y}), std::max({t[0].y, t[1].y, t[2].y}));
+    return static_cast<double>(k1 - k0 + 1) * static_cast<double>(l1 - l0 + 1);
+  };
   std::vector<char> good(nF, 0);
   for (std::size_t f = 0; f < nF; ++f) {
-    good[f] = orient(q[f][0], q[f][1], q[f][2]) > 0;
+    good[f] = orient(q[f][0], q[f][1], q[f][2]) > 0 && cells_spanned(q[f]) <= max_cells_per_triangle;
     if (!good[f] && report.bad_triangles++ == 0) report.first_problem_triangle = static_cast<int>(f);
   }
 

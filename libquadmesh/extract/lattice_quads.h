@@ -42,7 +42,7 @@ struct ExtractionReport {
   std::size_t cells = 0;               ///< complete cells, i.e. quads
   std::size_t incomplete_cells = 0;    ///< covered area not 1: dropped
   std::size_t degenerate_cells = 0;    ///< two corners at one point, or a corner not found: dropped
-  std::size_t bad_triangles = 0;       ///< image area <= 0: not used
+  std::size_t bad_triangles = 0;       ///< image area <= 0 or too large (max_cells_per_triangle): not used
   std::size_t seam_mismatches = 0;     ///< corners whose charts differ by a non-integer translation
   int first_problem_triangle = -1;     ///< a triangle at the first problem met (bad or in a dropped cell)
 };
@@ -52,6 +52,11 @@ PolygonMesh polygon_mesh(const LatticeQuads& quads);
 
 /// fixed-point units per lattice unit
 constexpr std::int64_t lattice_scale = std::int64_t(1) << 30;
+
+/// A triangle whose image's bounding box spans more lattice cells than this is
+/// counted as bad (not used): no sound map has one, and enumerating it would take
+/// the memory of the machine.
+constexpr double max_cells_per_triangle = 65536;
 
 /// Precondition: `param` is seamless (charts differ by integer translations).
 LatticeQuads extract_lattice_quads(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,

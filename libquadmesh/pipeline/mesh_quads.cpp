@@ -82,6 +82,13 @@ void compact(LatticeQuads& q) {
   q = std::move(out);
 }
 
+double longest_image_edge(const FaceMap& map) {
+  double longest = 0;
+  for (const CornerValues& c : map.corners)
+    longest = std::max({longest, std::abs(c[1] - c[0]), std::abs(c[2] - c[1]), std::abs(c[0] - c[2])});
+  return longest;
+}
+
 double min_scaled_jacobian(const LatticeQuads& quads) {
   return quad_quality(polygon_mesh(quads), nullptr).min_scaled_jacobian;
 }
@@ -223,12 +230,15 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
     {
       // S as it is until the cone stars are refined
       const SurfaceAdjacency input = surface_adjacency(soup);
-      // at least 4 quad edges on every boundary loop
+      // at least 4 quad edges on every boundary loop, but not at any price: a form
+      // almost 0 along a loop would be scaled up a thousandfold (a lattice of
+      // millions of cells); beyond twice the scale the loop keeps fewer edges
+      const double count_scale = r.scale;
       for (const auto& loop : input.boundary_loops) {
         double variation = 0;
         for (std::size_t i = 0; i < loop.size(); ++i)
           variation += std::abs(edge_value(input, h, loop[i], loop[(i + 1) % loop.size()]).real());
-        if (variation > 0 && r.scale * variation < 4.5) r.scale = 4.5 / variation;
+        if (variation > 0 && r.scale * variation < 4.5) r.scale = std::min(4.5 / variation, 2 * count_scale);
       }
       r.size = std::sqrt(area / (r.scale * r.scale * image_area_sum(h)));
       target = scaled(h, r.scale);
@@ -274,10 +284,19 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
     auto untangle_folds = [&](UntangleReport& report) {
       report = untangle_by_barrier(soup, adjacency, r.quantization.param, pinned);
       if (report.flipped_after > 0) {
+        // one vertex at a time; kept only if it removed folds without blowing the
+        // map up (each move stays within twice its star, but a hundred sweeps of
+        // them can spread a region over thousands of cells)
+        const FaceMap before = r.quantization.param;
         const UntangleReport local = untangle(soup, adjacency, r.quantization.param, pinned);
-        report.flipped_after = local.flipped_after;
-        report.moved_vertices += local.moved_vertices;
-        report.rounds += local.rounds;
+        if (local.flipped_after < report.flipped_after &&
+            longest_image_edge(r.quantization.param) <= 2 * longest_image_edge(before)) {
+          report.flipped_after = local.flipped_after;
+          report.moved_vertices += local.moved_vertices;
+          report.rounds += local.rounds;
+        } else {
+          r.quantization.param = before;
+        }
       }
     };
     if (const auto folds = unsafe(); folds > 0) {

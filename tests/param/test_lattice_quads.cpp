@@ -108,3 +108,17 @@ TEST_CASE("a folded triangle is reported, never extracted") {
   CHECK(report.bad_triangles > 0);
   CHECK(q.quads.size() < 16);
 }
+
+TEST_CASE("a map blown up over millions of cells is refused triangle by triangle, not enumerated") {
+  // grid(4) scaled so that each triangle spans (2^12 / 4)^2 / 2 ~ 500000 cells
+  const TriangleSoup soup = test::grid(4);
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  ExtractionReport report;
+  const LatticeQuads q = extract_lattice_quads(soup, adjacency, affine_map(soup, 4096.0, 0.0), report);
+  CHECK(report.bad_triangles == soup.triangles.size());
+  CHECK(q.quads.empty());
+  // just under the limit, the same triangles are extracted: (2^7 / 4)^2 = 1024 cells per square
+  const LatticeQuads fine = extract_lattice_quads(soup, adjacency, affine_map(soup, 128.0, 0.0), report);
+  CHECK(report.bad_triangles == 0);
+  CHECK(fine.quads.size() == 128u * 128u);
+}
