@@ -211,6 +211,34 @@ TEST_CASE("mesh: cells the extraction drops leave a gap, written with one warnin
   CHECK(lines[1].find("the gap") != std::string::npos);
 }
 
+TEST_CASE("mesh: an L-bracket with a long arm fails fast, naming the long end (a limit of the method)") {
+  // 200 x 40 with an arm 100 long and 20 wide: every symmetric form decays like
+  // exp(-pi x / 20) along it. One basis form was almost 0 along a hole and was
+  // scaled a thousandfold to give that loop 4 edges: the lattice took 15 GB.
+  const std::string dir = test::scratch_dir("cli_long_arm");
+  {
+    std::ofstream geo(dir + "/bracket.geo");
+    geo << "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 200, 40};\n"
+           "Rectangle(100) = {100, 20, 0, 200, 40};\n"
+           "BooleanDifference{ Surface{1}; Delete; }{ Surface{100}; Delete; }\n"
+           "Disk(2) = {123.93, 10.68, 0, 3.53};\nDisk(3) = {24.34, 17.21, 0, 6.02};\n"
+           "Disk(4) = {78.69, 28.56, 0, 7.76};\n"
+           "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:4}; Delete; }\n";
+  }
+  const std::string output = dir + "/out.msh";
+  const Run run = quadmesh("mesh " + quoted(dir + "/bracket.geo") + " -o " + quoted(output) + " --size 1.5% -q");
+  CHECK(run.status == 1);
+  const auto lines = run.error_lines();
+  REQUIRE(lines.size() == 1);
+  CHECK(lines[0].rfind("quadmesh: error: the quad mesh would not be conforming", 0) == 0);
+  // the place is in the arm (x > 100)
+  const std::size_t at = lines[0].find("times --size near (");
+  REQUIRE(at != std::string::npos);
+  CHECK(std::atof(lines[0].c_str() + at + std::string("times --size near (").size()) > 100.0);
+  CHECK(lines[0].find("a long end or a protrusion") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(output));
+}
+
 TEST_CASE("mesh: bad options are usage errors, before any work") {
   const std::string dir = test::scratch_dir("cli_mesh_options");
   const std::string input = test::example("annulus.geo");

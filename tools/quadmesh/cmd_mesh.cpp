@@ -41,12 +41,31 @@ void require_conforming(const MeshSummary& s, const QuadMeshResult& r) {
       q.manifold && q.consistently_oriented && q.triangles == 0 && q.other_faces == 0)
     return;
   const std::string where = near_first_problem(r, " first");
+  // the usual cause: a long end or a protrusion, where every such differential
+  // decays and the cells grow until the boundary there collapses
+  std::string cause;
+  double longest = 0;
+  Vec3 at = Vec3::Zero();
+  for (const auto& quad : r.quads.quads)
+    for (std::size_t k = 0; k < quad.size(); ++k) {
+      const Vec3& a = r.quads.points[static_cast<std::size_t>(quad[k])];
+      const Vec3& b = r.quads.points[static_cast<std::size_t>(quad[(k + 1) % quad.size()])];
+      if ((a - b).norm() > longest) {
+        longest = (a - b).norm();
+        at = (a + b) / 2;
+      }
+    }
+  if (r.size_requested > 0 && longest > 4 * r.size_requested)
+    cause = fmt::format("; quad edges reach {:.0f} times --size near ({:.6g}, {:.6g}, {:.6g}): the differential is "
+                        "small there (a long end or a protrusion), a limit of the method (README Limits)",
+                        longest / r.size_requested, at.x(), at.y(), at.z());
   throw Error(ErrorCode::solver,
               fmt::format("the quad mesh would not be conforming (chi {} and {} boundary loops, the input has {} "
-                          "and {}): {} folded triangles and {} incomplete cells are left{}; no output was written; "
+                          "and {}): {} folded triangles and {} incomplete cells are left{}{}; no output was written; "
                           "try another --size or --form",
                           q.euler_characteristic, q.boundary_loops, s.input_euler_characteristic,
-                          s.input_boundary_loops, r.extraction.bad_triangles, r.extraction.incomplete_cells, where));
+                          s.input_boundary_loops, r.extraction.bad_triangles, r.extraction.incomplete_cells, where,
+                          cause));
 }
 
 /// Lattice cells the extraction could not make into quads leave gaps in the mesh
