@@ -14,7 +14,6 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <fstream>
 
 using namespace qm;
 
@@ -168,11 +167,7 @@ TEST_CASE("CAD plates that had gaps: branch points off the lattice, overlapping 
   };
   for (const Plate& plate : plates) {
     CAPTURE(plate.name);
-    const std::string path = dir + "/" + plate.name + ".geo";
-    {
-      std::ofstream out(path);
-      out << plate.geo;
-    }
+    const std::string path = test::write_text(dir, std::string(plate.name) + ".geo", plate.geo);
     io::ReadOptions read;
     read.quad_size_relative = 0.015;
     const TriangleSoup input = analyze_topology(io::read_surface(path, read).soup).soup;

@@ -21,6 +21,12 @@ std::string scratch_dir(const std::string& test_name) {
   return dir.string();
 }
 
+std::string write_text(const std::string& dir, const std::string& name, const std::string& text) {
+  const std::string path = dir + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
 TriangleSoup annulus(double r0, double r1, int rings, int sectors) {
   TriangleSoup s;
   for (int i = 0; i <= rings; ++i)

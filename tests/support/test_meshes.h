@@ -14,6 +14,8 @@ std::string shared_mesh(const std::string& name);
 std::string example(const std::string& name);
 /// A fresh empty folder under the system temp dir for one test.
 std::string scratch_dir(const std::string& test_name);
+/// Writes `text` to dir/name (a .geo written by a test); returns the path.
+std::string write_text(const std::string& dir, const std::string& name, const std::string& text);
 
 /// Planar annulus r0 <= |z| <= r1 with `rings` x `sectors` quads split in two
 /// (genus 0, 2 boundaries, chi 0).

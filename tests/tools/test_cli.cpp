@@ -187,16 +187,14 @@ TEST_CASE("mesh: cells the extraction drops leave a gap, written with one warnin
   // beside one hole the untangling leaves a fold it cannot remove (a known defect),
   // and the cells over it are dropped
   const std::string dir = test::scratch_dir("cli_dropped");
-  {
-    std::ofstream geo(dir + "/plate.geo");
-    geo << "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 120, 40, 6.66667};\n"
-           "Disk(2) = {49.03, 18.53, 0, 7.14};\nDisk(3) = {15.99, 15.23, 0, 4.78};\n"
-           "Disk(4) = {89.74, 26.40, 0, 6.88};\nDisk(5) = {33.22, 28.93, 0, 7.16};\n"
-           "Disk(6) = {74.47, 18.22, 0, 7.33};\nDisk(7) = {108.26, 11.42, 0, 3.95};\n"
-           "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:7}; Delete; }\n";
-  }
+  const std::string plate = test::write_text(dir, "plate.geo",
+      "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 120, 40, 6.66667};\n"
+      "Disk(2) = {49.03, 18.53, 0, 7.14};\nDisk(3) = {15.99, 15.23, 0, 4.78};\n"
+      "Disk(4) = {89.74, 26.40, 0, 6.88};\nDisk(5) = {33.22, 28.93, 0, 7.16};\n"
+      "Disk(6) = {74.47, 18.22, 0, 7.33};\nDisk(7) = {108.26, 11.42, 0, 3.95};\n"
+      "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:7}; Delete; }\n");
   const std::string output = dir + "/out.msh", report = dir + "/report.json";
-  const Run run = quadmesh("mesh " + quoted(dir + "/plate.geo") + " -o " + quoted(output) + " --size 2.5% -q --report " +
+  const Run run = quadmesh("mesh " + quoted(plate) + " -o " + quoted(output) + " --size 2.5% -q --report " +
                            quoted(report));
   CHECK(run.status == 0);
   CHECK(std::filesystem::exists(output));
@@ -216,17 +214,15 @@ TEST_CASE("mesh: an L-bracket with a long arm fails fast, naming the long end (a
   // exp(-pi x / 20) along it. One basis form was almost 0 along a hole and was
   // scaled a thousandfold to give that loop 4 edges: the lattice took 15 GB.
   const std::string dir = test::scratch_dir("cli_long_arm");
-  {
-    std::ofstream geo(dir + "/bracket.geo");
-    geo << "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 200, 40};\n"
-           "Rectangle(100) = {100, 20, 0, 200, 40};\n"
-           "BooleanDifference{ Surface{1}; Delete; }{ Surface{100}; Delete; }\n"
-           "Disk(2) = {123.93, 10.68, 0, 3.53};\nDisk(3) = {24.34, 17.21, 0, 6.02};\n"
-           "Disk(4) = {78.69, 28.56, 0, 7.76};\n"
-           "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:4}; Delete; }\n";
-  }
+  const std::string bracket = test::write_text(dir, "bracket.geo",
+      "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 200, 40};\n"
+      "Rectangle(100) = {100, 20, 0, 200, 40};\n"
+      "BooleanDifference{ Surface{1}; Delete; }{ Surface{100}; Delete; }\n"
+      "Disk(2) = {123.93, 10.68, 0, 3.53};\nDisk(3) = {24.34, 17.21, 0, 6.02};\n"
+      "Disk(4) = {78.69, 28.56, 0, 7.76};\n"
+      "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:4}; Delete; }\n");
   const std::string output = dir + "/out.msh";
-  const Run run = quadmesh("mesh " + quoted(dir + "/bracket.geo") + " -o " + quoted(output) + " --size 1.5% -q");
+  const Run run = quadmesh("mesh " + quoted(bracket) + " -o " + quoted(output) + " --size 1.5% -q");
   CHECK(run.status == 1);
   const auto lines = run.error_lines();
   REQUIRE(lines.size() == 1);
