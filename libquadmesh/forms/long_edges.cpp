@@ -3,6 +3,8 @@
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/topology/edge_incidence.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <map>
 #include <utility>
@@ -78,6 +80,19 @@ std::size_t split_long_edges(TriangleSoup& soup, double max_length) {
     }
     splits += pass;
   }
+}
+
+double long_edge_area_fraction(const TriangleSoup& soup, double max_length) {
+  double total = 0, long_area = 0;
+  for (const Triangle& t : soup.triangles) {
+    const Vec3& a = soup.points[static_cast<std::size_t>(t[0])];
+    const Vec3& b = soup.points[static_cast<std::size_t>(t[1])];
+    const Vec3& c = soup.points[static_cast<std::size_t>(t[2])];
+    const double area = 0.5 * (b - a).cross(c - a).norm();
+    total += area;
+    if (std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()}) > max_length) long_area += area;
+  }
+  return total > 0 ? long_area / total : 0.0;
 }
 
 }  // namespace qm

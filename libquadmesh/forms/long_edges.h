@@ -18,4 +18,8 @@ namespace qm {
 /// manifold soup; max_length > 0.
 std::size_t split_long_edges(TriangleSoup& soup, double max_length);
 
+/// The fraction of the surface's area in triangles with an edge longer than
+/// `max_length` (0 for an empty soup).
+double long_edge_area_fraction(const TriangleSoup& soup, double max_length);
+
 }  // namespace qm

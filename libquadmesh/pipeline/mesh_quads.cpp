@@ -389,7 +389,7 @@ QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, con
                 "quad meshing of closed surfaces is not implemented yet (their forms are: see `quadmesh forms`)");
   if (options.remesh == RemeshPolicy::always) return mesh_quads_on(std::move(soup), options, progress);
   // Triangles wider than the quads carry one linear map across several quads:
-  // split them (long_edges.h). The finer triangulation changes where the zeros
+  // where they cover 5% of the area or more, split them (long_edges.h). The finer triangulation changes where the zeros
   // and folds fall, not always for the better, so the input as it is is meshed
   // too and the better result kept (shortcomings()).
   const double area = surface_area(soup);
@@ -398,6 +398,8 @@ QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, con
                       : options.size > 0          ? options.size
                       : options.size_relative > 0 ? options.size_relative * diagonal
                                                   : diagonal / 60.0;
+  // a few long edges (a scan's hole rim) are not worth a second run
+  if (long_edge_area_fraction(soup, size) < 0.05) return mesh_quads_on(std::move(soup), options, progress);
   TriangleSoup split = soup;
   const std::size_t splits = split_long_edges(split, size);
   if (splits == 0) return mesh_quads_on(std::move(soup), options, progress);

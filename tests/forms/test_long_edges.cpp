@@ -58,3 +58,13 @@ TEST_CASE("long edges: a mesh already finer than the limit is left as it is") {
   CHECK(split_long_edges(soup, 0.2) == 0);
   CHECK(soup.triangles == before.triangles);
 }
+
+TEST_CASE("long edges: the fraction of the area they cover") {
+  const TriangleSoup soup = test::grid(2);  // 8 triangles of area 1/8, sides 0.5 and 0.71
+  CHECK(long_edge_area_fraction(soup, 0.6) == doctest::Approx(1.0));
+  CHECK(long_edge_area_fraction(soup, 0.8) == 0.0);
+  TriangleSoup mixed = soup;
+  split_long_edges(mixed, 0.6);  // every triangle now has sides <= 0.5
+  CHECK(long_edge_area_fraction(mixed, 0.6) == 0.0);
+  CHECK(long_edge_area_fraction(TriangleSoup{}, 1.0) == 0.0);
+}
