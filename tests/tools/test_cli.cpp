@@ -137,6 +137,7 @@ void expect_quad_mesh(const std::string& input, const std::string& size, int chi
   if (far) {
     CHECK(run.err.find("quadmesh: warning: the quads are up to ") != std::string::npos);
     CHECK(run.err.find(" asked (--max-deviation)") != std::string::npos);
+    CHECK(run.err.find(" times --size: the differential is small there") != std::string::npos);
     CHECK(q["hausdorff_rel"].get<double>() > 0.01);
     CHECK(q["hausdorff_at"].size() == 3);
   }

@@ -105,14 +105,29 @@ void warn_if_far(const MeshSummary& s, const QuadMeshResult& r, double diagonal)
   const double distance = s.quality.hausdorff_rel * diagonal;
   if (r.max_deviation <= 0 || !(distance > 1.25 * r.max_deviation)) return;
   const Vec3& p = s.quality.hausdorff_at;
+  // the longest edge of the quads around that place, against the size asked
+  double longest = 0;
+  for (const auto& quad : r.quads.quads) {
+    Vec3 c = Vec3::Zero();
+    for (int v : quad) c += r.quads.points[static_cast<std::size_t>(v)] / 4.0;
+    double edge = 0;
+    for (std::size_t k = 0; k < 4; ++k)
+      edge = std::max(edge, (r.quads.points[static_cast<std::size_t>(quad[k])] -
+                             r.quads.points[static_cast<std::size_t>(quad[(k + 1) % 4])]).norm());
+    if ((c - p).norm() <= edge + distance) longest = std::max(longest, edge);
+  }
+  const double ratio = r.size_requested > 0 ? longest / r.size_requested : 0;
   const bool gap = r.extraction.incomplete_cells + r.extraction.degenerate_cells > 0;
+  const std::string cause =
+      gap            ? "the gap above, or quads larger than --size there"
+      : ratio >= 1.5 ? fmt::format("the quads there are up to {:.0f} times --size: the differential is small there (a "
+                                   "protrusion, a long end or a narrow part)",
+                                   ratio)
+                     : "the surface is curved there at the scale of --size";
   fmt::print(stderr,
              "quadmesh: warning: the quads are up to {:.3g} ({:.2g}% of the diagonal) from the surface, near ({:.6g}, "
-             "{:.6g}, {:.6g}), against {:.3g} asked (--max-deviation): {}the differential is small there (a "
-             "protrusion or a long end), so its quads are larger than --size; try another --form or a smaller "
-             "--size\n",
-             distance, 100 * s.quality.hausdorff_rel, p.x(), p.y(), p.z(), r.max_deviation,
-             gap ? "the gap above, or " : "");
+             "{:.6g}, {:.6g}), against {:.3g} asked (--max-deviation): {}; try another --form or a smaller --size\n",
+             distance, 100 * s.quality.hausdorff_rel, p.x(), p.y(), p.z(), r.max_deviation, cause);
 }
 }  // namespace
 
