@@ -363,6 +363,12 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
   if (options.max_deviation >= 0 && !best.quads.quads.empty()) refine_where_deviating(best, options, diagonal, stages, [&](double density) {
     return attempt(best.coefficients, soup, basis, density);
   });
+  if (!best.quads.quads.empty()) {
+    stages.next("smoothing", "smoothing the worst quads");
+    QuadSmoothingOptions smoothing;
+    smoothing.max_move = 0.5 * best.size_requested;
+    best.smoothing = smooth_worst_quads(best.surface, best.quads, best.boundary_loop_of_point, smoothing);
+  }
   stages.close();
   best.timings = r.timings;
   return best;

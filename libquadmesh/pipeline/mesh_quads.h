@@ -5,6 +5,7 @@
 
 #include "libquadmesh/extract/deviation_refinement.h"
 #include "libquadmesh/extract/lattice_quads.h"
+#include "libquadmesh/extract/quad_smoothing.h"
 #include "libquadmesh/forms/symmetric_forms.h"
 #include "libquadmesh/param/branch_points.h"
 #include "libquadmesh/param/map_zeros.h"
@@ -71,6 +72,7 @@ struct QuadMeshResult {
   double base_density = 1.0;     ///< the base lattice's quad count as a fraction of the target (< 1: coarsened)
   double max_deviation = 0.0;    ///< the tolerance used (0: refinement off)
   DeviationRefinementReport refinement;
+  QuadSmoothingReport smoothing;  ///< the worst quads' interior points moved on S
   std::vector<std::pair<std::string, double>> timings;  ///< seconds per stage
   /// Edges of the input longer than the target size, split (forms/long_edges.h);
   /// when > 0 the input as it is was meshed too, and the better result kept.

@@ -263,6 +263,22 @@ TEST_CASE("aqua-center: splitting chords brings the quads within the tolerance, 
   CHECK(q.irregular_interior == q0.irregular_interior);
 }
 
+TEST_CASE("bunny at 1.5%: smoothing the worst quads lifts the minimum scaled Jacobian over 0.3") {
+  // a boundary quad at a hole rim that zigzags in the scan, and quads beside it
+  const TriangleSoup input = analysed(test::shared_mesh("bunny-open.obj"));
+  QuadMeshOptions options;
+  options.size_relative = 0.015;
+  const QuadMeshResult r = mesh_quads(input, options);
+  CHECK(r.smoothing.min_before < 0.3);
+  CHECK(r.smoothing.min_after >= 0.3);
+  CHECK(r.smoothing.moved_points > 0);
+  const QuadQuality q = quad_quality(polygon_mesh(r.quads), nullptr);
+  CHECK(q.min_scaled_jacobian == doctest::Approx(r.smoothing.min_after));
+  CHECK(q.inverted == 0);
+  CHECK(q.euler_characteristic == -3);
+  CHECK(q.boundary_loops == 5);
+}
+
 TEST_CASE("chord refinement never turns a quad over: a round that would is undone") {
   // bunny-open at 2%: splitting the chords through its ears places a quad centre
   // where the split quads turn over (1 inverted quad before the guard)

@@ -153,6 +153,9 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
                      {"chords_split", result.chords_split},
                      {"zero_star_splits", result.star_splits}};
   const DeviationRefinementReport& rf = result.refinement;
+  j["smoothing"] = {{"moved_points", result.smoothing.moved_points},
+                    {"min_scaled_jacobian_before", result.smoothing.min_before},
+                    {"min_scaled_jacobian_after", result.smoothing.min_after}};
   j["long_edges"] = {{"split", result.long_edges_split},
                      {"kept", result.long_edges_split == 0 ? "none split" : result.long_edges_kept ? "split" : "input"}};
   j["refinement"] = {{"enabled", result.max_deviation > 0},

@@ -1,0 +1,118 @@
+#include "libquadmesh/extract/quad_smoothing.h"
+
+#include "libquadmesh/core/error.h"
+#include "libquadmesh/quality/quad_quality.h"
+#include "libquadmesh/quality/triangle_tree.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <limits>
+#include <set>
+
+namespace qm {
+
+namespace {
+
+/// Barycentric coordinates of p (on or near the triangle) in triangle t.
+std::array<double, 3> barycentric(const TriangleSoup& s, const Triangle& t, const Vec3& p) {
+  const Vec3& a = s.points[static_cast<std::size_t>(t[0])];
+  const Vec3& b = s.points[static_cast<std::size_t>(t[1])];
+  const Vec3& c = s.points[static_cast<std::size_t>(t[2])];
+  const Vec3 n = (b - a).cross(c - a);
+  const double area = n.squaredNorm();
+  if (area == 0) return {1.0, 0.0, 0.0};
+  const double u = (c - b).cross(p - b).dot(n) / area;
+  const double v = (a - c).cross(p - c).dot(n) / area;
+  return {u, v, 1.0 - u - v};
+}
+
+}  // namespace
+
+QuadSmoothingReport smooth_worst_quads(const TriangleSoup& surface, LatticeQuads& quads,
+                                       const std::vector<int>& boundary_loop_of_point,
+                                       const QuadSmoothingOptions& options) {
+  QM_ASSERT(boundary_loop_of_point.size() == quads.points.size());
+  QuadSmoothingReport report;
+  const std::size_t nP = quads.points.size();
+  std::vector<std::vector<int>> quads_at(nP);
+  for (std::size_t q = 0; q < quads.quads.size(); ++q)
+    for (int v : quads.quads[q]) quads_at[static_cast<std::size_t>(v)].push_back(static_cast<int>(q));
+  // regular interior points only
+  std::vector<char> movable(nP, 0);
+  for (std::size_t v = 0; v < nP; ++v) movable[v] = boundary_loop_of_point[v] < 0 && quads_at[v].size() == 4;
+
+  const TriangleTree tree(surface.points, surface.triangles);
+  std::vector<double> jacobian = quad_shape_samples(polygon_mesh(quads)).scaled_jacobian;
+  report.min_before = jacobian.empty() ? 1.0 : *std::min_element(jacobian.begin(), jacobian.end());
+  report.min_after = report.min_before;
+  const LatticeQuads original = quads;
+  std::set<int> moved;
+  for (int round = 0; round < options.rounds; ++round) {
+    const std::vector<Vec3> normals = vertex_normals(polygon_mesh(quads));
+    // the smallest corner scaled Jacobian of the quads around v with v at p
+    auto local_min = [&](int v, const Vec3& p) {
+      double worst = std::numeric_limits<double>::infinity();
+      for (int q : quads_at[static_cast<std::size_t>(v)]) {
+        const auto& quad = quads.quads[static_cast<std::size_t>(q)];
+        auto at = [&](int k) -> const Vec3& {
+          const int u = quad[static_cast<std::size_t>((k + 4) % 4)];
+          return u == v ? p : quads.points[static_cast<std::size_t>(u)];
+        };
+        for (int k = 0; k < 4; ++k)
+          worst = std::min(worst, corner_scaled_jacobian(at(k - 1), at(k), at(k + 1),
+                                                         normals[static_cast<std::size_t>(quad[static_cast<std::size_t>(k)])]));
+      }
+      return worst;
+    };
+    std::set<int> candidates;
+    for (std::size_t q = 0; q < quads.quads.size(); ++q)
+      if (jacobian[q] < options.below)
+        for (int v : quads.quads[q])
+          if (movable[static_cast<std::size_t>(v)]) candidates.insert(v);
+    std::size_t moves = 0;
+    for (int v : candidates) {
+      // the mean of the edge neighbours
+      Vec3 mean = Vec3::Zero();
+      int count = 0;
+      for (int q : quads_at[static_cast<std::size_t>(v)]) {
+        const auto& quad = quads.quads[static_cast<std::size_t>(q)];
+        const int k = static_cast<int>(std::find(quad.begin(), quad.end(), v) - quad.begin());
+        mean += quads.points[static_cast<std::size_t>(quad[static_cast<std::size_t>((k + 1) % 4)])];
+        ++count;
+      }
+      mean /= count;
+      const Vec3 here = quads.points[static_cast<std::size_t>(v)];
+      const double now = local_min(v, here);
+      for (double step : {1.0, 0.5, 0.25}) {
+        const auto [p, face] = tree.closest(here + step * (mean - here));
+        if (options.max_move > 0 && (p - original.points[static_cast<std::size_t>(v)]).norm() > options.max_move)
+          continue;
+        if (local_min(v, p) <= now + 1e-9) continue;
+        quads.points[static_cast<std::size_t>(v)] = p;
+        SurfaceLocation& loc = quads.locations[static_cast<std::size_t>(v)];
+        loc = SurfaceLocation{};
+        loc.kind = SurfaceLocation::Kind::face;
+        loc.face = face;
+        loc.barycentric = barycentric(surface, surface.triangles[static_cast<std::size_t>(face)], p);
+        moved.insert(v);
+        ++moves;
+        break;
+      }
+    }
+    jacobian = quad_shape_samples(polygon_mesh(quads)).scaled_jacobian;
+    if (moves == 0) break;
+  }
+  report.min_after = jacobian.empty() ? 1.0 : *std::min_element(jacobian.begin(), jacobian.end());
+  // each move raised its own quads' worst corner, with the neighbours' normals of
+  // before it; should the whole have come out worse, it is undone
+  if (report.min_after < report.min_before) {
+    quads = original;
+    report.min_after = report.min_before;
+    moved.clear();
+  }
+  report.moved_points = moved.size();
+  return report;
+}
+
+}  // namespace qm
