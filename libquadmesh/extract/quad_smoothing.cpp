@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <set>
 
@@ -84,11 +85,40 @@ QuadSmoothingReport smooth_worst_quads(const TriangleSoup& surface, LatticeQuads
       mean /= count;
       const Vec3 here = quads.points[static_cast<std::size_t>(v)];
       const double now = local_min(v, here);
-      for (double step : {1.0, 0.5, 0.25}) {
-        const auto [p, face] = tree.closest(here + step * (mean - here));
+      // candidates: towards the mean, then (when that does not help, e.g. beside a
+      // singular vertex) a pattern search in the tangent plane; the best one that
+      // raises the worst corner is taken
+      std::vector<Vec3> tries;
+      for (double step : {1.0, 0.5, 0.25}) tries.push_back(here + step * (mean - here));
+      {
+        const Vec3& n = normals[static_cast<std::size_t>(v)];
+        double edge = 0;
+        for (int q : quads_at[static_cast<std::size_t>(v)]) {
+          const auto& quad = quads.quads[static_cast<std::size_t>(q)];
+          const int k = static_cast<int>(std::find(quad.begin(), quad.end(), v) - quad.begin());
+          edge += (quads.points[static_cast<std::size_t>(quad[static_cast<std::size_t>((k + 1) % 4)])] - here).norm() / 4;
+        }
+        Vec3 x = n.unitOrthogonal();
+        const Vec3 y = n.cross(x);
+        for (double step : {0.2, 0.1, 0.05})
+          for (int d = 0; d < 8; ++d)
+            tries.push_back(here + step * edge * (std::cos(d * M_PI / 4) * x + std::sin(d * M_PI / 4) * y));
+      }
+      double best = now + 1e-9;
+      std::pair<Vec3, int> chosen{here, -1};
+      for (std::size_t t = 0; t < tries.size(); ++t) {
+        if (t == 3 && chosen.second >= 0) break;  // the mean helped: no search
+        const auto [p, face] = tree.closest(tries[t]);
         if (options.max_move > 0 && (p - original.points[static_cast<std::size_t>(v)]).norm() > options.max_move)
           continue;
-        if (local_min(v, p) <= now + 1e-9) continue;
+        if (const double m = local_min(v, p); m > best) {
+          best = m;
+          chosen = {p, face};
+          if (t < 3) break;
+        }
+      }
+      if (chosen.second >= 0) {
+        const auto& [p, face] = chosen;
         quads.points[static_cast<std::size_t>(v)] = p;
         SurfaceLocation& loc = quads.locations[static_cast<std::size_t>(v)];
         loc = SurfaceLocation{};
@@ -97,7 +127,6 @@ QuadSmoothingReport smooth_worst_quads(const TriangleSoup& surface, LatticeQuads
         loc.barycentric = barycentric(surface, surface.triangles[static_cast<std::size_t>(face)], p);
         moved.insert(v);
         ++moves;
-        break;
       }
     }
     jacobian = quad_shape_samples(polygon_mesh(quads)).scaled_jacobian;

@@ -363,7 +363,7 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
   if (options.max_deviation >= 0 && !best.quads.quads.empty()) refine_where_deviating(best, options, diagonal, stages, [&](double density) {
     return attempt(best.coefficients, soup, basis, density);
   });
-  if (!best.quads.quads.empty()) {
+  if (options.smoothing && !best.quads.quads.empty()) {
     stages.next("smoothing", "smoothing the worst quads");
     QuadSmoothingOptions smoothing;
     smoothing.max_move = 0.5 * best.size_requested;
@@ -393,7 +393,8 @@ QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, con
   if (surface_adjacency(soup).boundary_loops.empty())
     throw Error(ErrorCode::unsupported,
                 "quad meshing of closed surfaces is not implemented yet (their forms are: see `quadmesh forms`)");
-  if (options.remesh == RemeshPolicy::always) return mesh_quads_on(std::move(soup), options, progress);
+  if (options.remesh == RemeshPolicy::always || !options.split_long_edges)
+    return mesh_quads_on(std::move(soup), options, progress);
   // Triangles wider than the quads carry one linear map across several quads:
   // where they cover 5% of the area or more, split them (long_edges.h). The finer triangulation changes where the zeros
   // and folds fall, not always for the better, so the input as it is is meshed

@@ -45,6 +45,11 @@ struct QuadMeshOptions {
   /// refinement needs more, the base lattice is made coarser to pay for it.
   double max_deviation = 0.0;
   double max_deviation_relative = 0.0;  ///< the same as a fraction of the bounding-box diagonal (wins when > 0)
+  /// Move the regular interior corners of the worst quads (extract/quad_smoothing.h).
+  bool smoothing = true;
+  /// Where triangles wider than the quads cover 5% of the area, also mesh the input
+  /// split by longest-edge bisection and keep the better result (forms/long_edges.h).
+  bool split_long_edges = true;
 };
 
 struct QuadMeshResult {

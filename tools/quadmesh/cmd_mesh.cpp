@@ -147,6 +147,7 @@ int run_mesh(const MeshOptions& options, const CommonOptions& common) {
   mesher.form = options.form;
   mesher.coefficients = options.coefficients;
   mesher.rotate = options.rotate;
+  mesher.smoothing = !options.no_smoothing;
   mesher.size = options.size;
   mesher.size_relative = options.size_relative;
   mesher.quads = options.quads;

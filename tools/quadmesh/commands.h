@@ -28,6 +28,7 @@ struct MeshOptions {
   int form = -1;             ///< -1: auto; else the symmetric basis form (from 0)
   std::vector<double> coefficients;  ///< --coeffs
   bool rotate = false;
+  bool no_smoothing = false;            ///< --no-smoothing
   double corner_angle_deg = 30.0;
   double max_deviation = 0.0;           ///< --max-deviation D; 0: half the size; < 0: off
   double max_deviation_relative = 0.0;  ///< --max-deviation P%: P/100 of the diagonal
