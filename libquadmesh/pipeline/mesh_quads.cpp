@@ -65,6 +65,31 @@ std::pair<int, int> topology_of(const PolygonMesh& mesh) {
   return {q.euler_characteristic, q.boundary_loops};
 }
 
+/// The same for a triangulated surface.
+std::pair<int, int> topology_of(const TriangleSoup& soup) {
+  PolygonMesh mesh;
+  mesh.points = soup.points;
+  for (const Triangle& t : soup.triangles) mesh.faces.push_back({t[0], t[1], t[2]});
+  return topology_of(mesh);
+}
+
+/// The edge length the options ask for: --size (absolute or relative to the
+/// bounding-box diagonal, default 1/60 of it) and, when --quads is given, the edge
+/// of a square of area / quads instead.
+struct RequestedSize {
+  double size = 0;   ///< from --size (QuadMeshResult::size_requested)
+  double edge = 0;   ///< what the quads should measure: from --quads when given, else `size`
+};
+RequestedSize requested_size(const TriangleSoup& soup, const QuadMeshOptions& options) {
+  const double diagonal = bounding_box_diagonal(soup.points, soup.triangles);
+  RequestedSize r;
+  r.size = options.size > 0            ? options.size
+           : options.size_relative > 0 ? options.size_relative * diagonal
+                                       : diagonal / 60.0;
+  r.edge = options.quads > 0 ? std::sqrt(surface_area(soup) / static_cast<double>(options.quads)) : r.size;
+  return r;
+}
+
 /// Drops points no quad uses (corners of dropped cells).
 void compact(LatticeQuads& q) {
   std::vector<int> index(q.points.size(), -1);
@@ -153,18 +178,12 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
 
   const double area = surface_area(soup);
   const double diagonal = bounding_box_diagonal(soup.points, soup.triangles);
-  r.size_requested = options.size > 0            ? options.size
-                     : options.size_relative > 0 ? options.size_relative * diagonal
-                                                 : diagonal / 60.0;
-  const double requested_size =
-      options.quads > 0 ? std::sqrt(area / static_cast<double>(options.quads)) : r.size_requested;
-  if (surface_adjacency(soup).boundary_loops.empty())
-    throw Error(ErrorCode::unsupported,
-                "quad meshing of closed surfaces is not implemented yet (their forms are: see `quadmesh forms`)");
+  const RequestedSize requested = requested_size(soup, options);
+  r.size_requested = requested.size;
   auto remesh = [&](TriangleSoup& s) {
     RemeshOptions remesh_options;
     remesh_options.target_edge_length =
-        options.remesh_size > 0 ? options.remesh_size : std::min(0.4 * mean_edge_length(s), requested_size / 3);
+        options.remesh_size > 0 ? options.remesh_size : std::min(0.4 * mean_edge_length(s), requested.edge / 3);
     stages.next("remeshing", fmt::format("remeshing isotropically (edge length {:.4g})",
                                          remesh_options.target_edge_length));
     s = remesh_isotropic(s, remesh_options);
@@ -280,37 +299,35 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
       for (int v : vertex_ring(soup, adjacency, z.vertex).neighbours)
         if (!pinned[static_cast<std::size_t>(v)]) pinned[static_cast<std::size_t>(v)] = 2;
     }
-    // all the vertices around the folds at once; what that leaves, one at a time
-    auto untangle_folds = [&](UntangleReport& report) {
-      report = untangle_by_barrier(soup, adjacency, r.quantization.param, pinned);
-      if (report.flipped_after > 0) {
-        // one vertex at a time; kept only if it removed folds without blowing the
-        // map up (each move stays within twice its star, but a hundred sweeps of
-        // them can spread a region over thousands of cells)
-        const FaceMap before = r.quantization.param;
-        const UntangleReport local = untangle(soup, adjacency, r.quantization.param, pinned);
-        if (local.flipped_after < report.flipped_after &&
-            longest_image_edge(r.quantization.param) <= 2 * longest_image_edge(before)) {
-          report.flipped_after = local.flipped_after;
-          report.moved_vertices += local.moved_vertices;
-          report.rounds += local.rounds;
-        } else {
-          r.quantization.param = before;
-        }
-      }
+    // all the vertices around the folds at once; what that leaves, one at a time.
+    // Each pass is added to r.untangle (flipped_after: the last pass's).
+    auto untangle_folds = [&] {
+      auto absorb = [&](const UntangleReport& pass) {
+        r.untangle.flipped_after = pass.flipped_after;
+        r.untangle.moved_vertices += pass.moved_vertices;
+        r.untangle.rounds += pass.rounds;
+      };
+      const UntangleReport barrier = untangle_by_barrier(soup, adjacency, r.quantization.param, pinned);
+      absorb(barrier);
+      if (barrier.flipped_after == 0) return;
+      // one vertex at a time; kept only if it removed folds without blowing the
+      // map up (each move stays within twice its star, but a hundred sweeps of
+      // them can spread a region over thousands of cells)
+      const FaceMap before = r.quantization.param;
+      const UntangleReport local = untangle(soup, adjacency, r.quantization.param, pinned);
+      if (local.flipped_after < barrier.flipped_after &&
+          longest_image_edge(r.quantization.param) <= 2 * longest_image_edge(before))
+        absorb(local);
+      else
+        r.quantization.param = before;
     };
     if (const auto folds = unsafe(); folds > 0) {
       stages.next("untangling", fmt::format("untangling {} folded or nearly flat triangles", folds));
-      untangle_folds(r.untangle);
+      r.untangle.flipped_before = count_flipped(r.quantization.param);
+      untangle_folds();
       // the untangled map may branch beside a cone rather than at it
       r.branch_points = snap_hidden_cones(soup, adjacency, r.quantization.param, r.zero_vertices, pinned);
-      if (r.branch_points.snapped > 0 && unsafe() > 0) {
-        UntangleReport again;
-        untangle_folds(again);
-        r.untangle.flipped_after = again.flipped_after;
-        r.untangle.moved_vertices += again.moved_vertices;
-        r.untangle.rounds += again.rounds;
-      }
+      if (r.branch_points.snapped > 0 && unsafe() > 0) untangle_folds();
       if (r.branch_points.hidden > 0)
         r.zero_vertices = mapped_cones(soup, adjacency, r.quantization.param, r.zero_vertices);
     }
@@ -336,12 +353,7 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
   };
   QuadMeshResult best = attempt(r.coefficients, soup, basis);
   const bool automatic = options.coefficients.empty() && options.form < 0;
-  PolygonMesh input;
-  if (automatic) {
-    input.points = soup.points;
-    for (const Triangle& t : soup.triangles) input.faces.push_back({t[0], t[1], t[2]});
-  }
-  const std::pair<int, int> input_topology = automatic ? topology_of(input) : std::pair<int, int>{};
+  const std::pair<int, int> input_topology = automatic ? topology_of(soup) : std::pair<int, int>{};
   if (automatic && topology_of(polygon_mesh(best.quads)) != input_topology) {
     // the basis forms, most uniform first
     std::vector<std::pair<double, int>> order;
@@ -399,12 +411,7 @@ QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, con
   // where they cover 5% of the area or more, split them (long_edges.h). The finer triangulation changes where the zeros
   // and folds fall, not always for the better, so the input as it is is meshed
   // too and the better result kept (shortcomings()).
-  const double area = surface_area(soup);
-  const double diagonal = bounding_box_diagonal(soup.points, soup.triangles);
-  const double size = options.quads > 0          ? std::sqrt(area / static_cast<double>(options.quads))
-                      : options.size > 0          ? options.size
-                      : options.size_relative > 0 ? options.size_relative * diagonal
-                                                  : diagonal / 60.0;
+  const double size = requested_size(soup, options).edge;
   // a few long edges (a scan's hole rim) are not worth a second run
   if (long_edge_area_fraction(soup, size) < 0.05) return mesh_quads_on(std::move(soup), options, progress);
   TriangleSoup split = soup;
@@ -414,10 +421,7 @@ QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, con
     progress(fmt::format("the input has triangles wider than the quads: {} edges split; meshing that and the input "
                          "as it is, to keep the better",
                          splits));
-  PolygonMesh input;
-  input.points = soup.points;
-  for (const Triangle& t : soup.triangles) input.faces.push_back({t[0], t[1], t[2]});
-  const std::pair<int, int> topology = topology_of(input);
+  const std::pair<int, int> topology = topology_of(soup);
   auto seconds_since = [](std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
   };
