@@ -35,6 +35,13 @@ std::pair<I64, I64> cell_range(I64 lo, I64 hi) {
   return {floor_div(lo, lattice_scale), ceil_div(hi, lattice_scale) - 1};
 }
 
+/// The cells [k0, k1] x [l0, l1] that a fixed-point triangle's bounding box meets.
+std::array<I64, 4> cell_box(const std::array<P2, 3>& t) {
+  const auto [k0, k1] = cell_range(std::min({t[0].x, t[1].x, t[2].x}), std::max({t[0].x, t[1].x, t[2].x}));
+  const auto [l0, l1] = cell_range(std::min({t[0].y, t[1].y, t[2].y}), std::max({t[0].y, t[1].y, t[2].y}));
+  return {k0, k1, l0, l1};
+}
+
 struct CellKey {
   int face;
   I64 k, l;
@@ -159,8 +166,7 @@ LatticeQuads extract_lattice_quads(const TriangleSoup& soup, const SurfaceAdjace
   // a triangle is used when positive and not absurdly large (a map blown up by a
   // failed repair would otherwise have its lattice enumerated cell by cell)
   auto cells_spanned = [&](const std::array<P2, 3>& t) {
-    const auto [k0, k1] = cell_range(std::min({t[0].x, t[1].x, t[2].x}), std::max({t[0].x, t[1].x, t[2].x}));
-    const auto [l0, l1] = cell_range(std::min({t[0].y, t[1].y, t[2].y}), std::max({t[0].y, t[1].y, t[2].y}));
+    const auto [k0, k1, l0, l1] = cell_box(t);
     return static_cast<double>(k1 - k0 + 1) * static_cast<double>(l1 - l0 + 1);
   };
   std::vector<char> good(nF, 0);
@@ -176,8 +182,7 @@ LatticeQuads extract_lattice_quads(const TriangleSoup& soup, const SurfaceAdjace
   for (std::size_t f = 0; f < nF; ++f) {
     if (!good[f]) continue;
     const auto& t = q[f];
-    const auto [k0, k1] = cell_range(std::min({t[0].x, t[1].x, t[2].x}), std::max({t[0].x, t[1].x, t[2].x}));
-    const auto [l0, l1] = cell_range(std::min({t[0].y, t[1].y, t[2].y}), std::max({t[0].y, t[1].y, t[2].y}));
+    const auto [k0, k1, l0, l1] = cell_box(t);
     for (I64 k = k0; k <= k1; ++k)
       for (I64 l = l0; l <= l1; ++l)
         if (triangle_meets_cell(t, k, l)) {

@@ -73,17 +73,18 @@ QuadSmoothingReport smooth_worst_quads(const TriangleSoup& surface, LatticeQuads
           if (movable[static_cast<std::size_t>(v)]) candidates.insert(v);
     std::size_t moves = 0;
     for (int v : candidates) {
-      // the mean of the edge neighbours
+      // the mean of the edge neighbours (one per quad, valence 4) and of the edges
+      const Vec3 here = quads.points[static_cast<std::size_t>(v)];
       Vec3 mean = Vec3::Zero();
-      int count = 0;
+      double edge = 0;
       for (int q : quads_at[static_cast<std::size_t>(v)]) {
         const auto& quad = quads.quads[static_cast<std::size_t>(q)];
         const int k = static_cast<int>(std::find(quad.begin(), quad.end(), v) - quad.begin());
-        mean += quads.points[static_cast<std::size_t>(quad[static_cast<std::size_t>((k + 1) % 4)])];
-        ++count;
+        const Vec3& next = quads.points[static_cast<std::size_t>(quad[static_cast<std::size_t>((k + 1) % 4)])];
+        mean += next;
+        edge += (next - here).norm() / 4;
       }
-      mean /= count;
-      const Vec3 here = quads.points[static_cast<std::size_t>(v)];
+      mean /= 4;
       const double now = local_min(v, here);
       // candidates: towards the mean, then (when that does not help, e.g. beside a
       // singular vertex) a pattern search in the tangent plane; the best one that
@@ -92,12 +93,6 @@ QuadSmoothingReport smooth_worst_quads(const TriangleSoup& surface, LatticeQuads
       for (double step : {1.0, 0.5, 0.25}) tries.push_back(here + step * (mean - here));
       {
         const Vec3& n = normals[static_cast<std::size_t>(v)];
-        double edge = 0;
-        for (int q : quads_at[static_cast<std::size_t>(v)]) {
-          const auto& quad = quads.quads[static_cast<std::size_t>(q)];
-          const int k = static_cast<int>(std::find(quad.begin(), quad.end(), v) - quad.begin());
-          edge += (quads.points[static_cast<std::size_t>(quad[static_cast<std::size_t>((k + 1) % 4)])] - here).norm() / 4;
-        }
         Vec3 x = n.unitOrthogonal();
         const Vec3 y = n.cross(x);
         for (double step : {0.2, 0.1, 0.05})

@@ -59,12 +59,14 @@ std::vector<double> image_angles(const TriangleSoup& soup, const FaceMap& param)
   return angle;
 }
 
-std::vector<HiddenCone> hidden_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
-                                     const FaceMap& param, const std::vector<ZeroVertex>& cones) {
-  std::vector<double> expected(soup.points.size());
+namespace {
+
+/// hidden_cones() from the image angles already summed.
+std::vector<HiddenCone> hidden_cones(const SurfaceAdjacency& adjacency, const std::vector<double>& angle,
+                                     const std::vector<ZeroVertex>& cones) {
+  std::vector<double> expected(angle.size());
   for (std::size_t v = 0; v < expected.size(); ++v) expected[v] = adjacency.boundary_vertex[v] ? M_PI : 2 * M_PI;
   for (const ZeroVertex& z : cones) expected[static_cast<std::size_t>(z.vertex)] = z.image_angle();
-  const std::vector<double> angle = image_angles(soup, param);
   std::vector<HiddenCone> hidden;
   for (std::size_t v = 0; v < angle.size(); ++v)
     if (!adjacency.vertex_faces[v].empty() && angle[v] > expected[v] + M_PI / 2)
@@ -72,19 +74,24 @@ std::vector<HiddenCone> hidden_cones(const TriangleSoup& soup, const SurfaceAdja
   return hidden;
 }
 
+}  // namespace
+
+std::vector<HiddenCone> hidden_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                     const FaceMap& param, const std::vector<ZeroVertex>& cones) {
+  return hidden_cones(adjacency, image_angles(soup, param), cones);
+}
+
 SnapReport snap_hidden_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, FaceMap& param,
                              const std::vector<ZeroVertex>& cones, std::vector<char>& pinned) {
   SnapReport report;
-  const std::vector<HiddenCone> hidden = hidden_cones(soup, adjacency, param, cones);
+  const std::vector<double> angle = image_angles(soup, param);
+  const std::vector<HiddenCone> hidden = hidden_cones(adjacency, angle, cones);
   report.hidden = hidden.size();
   // the cones that branch where they should stay where they are
   std::vector<char> keep(soup.points.size(), 0);
-  {
-    const std::vector<double> angle = image_angles(soup, param);
-    for (const ZeroVertex& z : cones)
-      if (std::abs(angle[static_cast<std::size_t>(z.vertex)] - z.image_angle()) < M_PI / 2)
-        keep[static_cast<std::size_t>(z.vertex)] = 1;
-  }
+  for (const ZeroVertex& z : cones)
+    if (std::abs(angle[static_cast<std::size_t>(z.vertex)] - z.image_angle()) < M_PI / 2)
+      keep[static_cast<std::size_t>(z.vertex)] = 1;
   for (const HiddenCone& h : hidden) {
     const int b = h.vertex;
     const bool boundary = adjacency.boundary_vertex[static_cast<std::size_t>(b)];
@@ -133,7 +140,7 @@ std::vector<ZeroVertex> mapped_cones(const TriangleSoup& soup, const SurfaceAdja
     }
     out.push_back(z);
   }
-  for (const HiddenCone& h : hidden_cones(soup, adjacency, param, cones))
+  for (const HiddenCone& h : hidden_cones(adjacency, angle, cones))
     out.push_back({h.vertex, order_of(h.vertex), static_cast<bool>(adjacency.boundary_vertex[static_cast<std::size_t>(h.vertex)]), false});
   return out;
 }

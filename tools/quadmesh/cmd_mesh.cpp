@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <limits>
 
 namespace qm::tools {
 
@@ -33,6 +34,28 @@ std::string near_first_problem(const QuadMeshResult& r, const std::string& lead)
   return fmt::format("{} near ({:.6g}, {:.6g}, {:.6g})", lead, c.x(), c.y(), c.z());
 }
 
+/// The longest quad edge, and its midpoint, among the quads whose centroid lies
+/// within `reach` plus their own longest edge of `near` (reach infinite: all).
+struct LongestEdge {
+  double length = 0;
+  Vec3 at = Vec3::Zero();
+};
+LongestEdge longest_quad_edge(const LatticeQuads& quads, const Vec3& near, double reach) {
+  LongestEdge longest;
+  for (const auto& quad : quads.quads) {
+    Vec3 centroid = Vec3::Zero();
+    LongestEdge own;
+    for (std::size_t k = 0; k < 4; ++k) {
+      const Vec3& a = quads.points[static_cast<std::size_t>(quad[k])];
+      const Vec3& b = quads.points[static_cast<std::size_t>(quad[(k + 1) % 4])];
+      centroid += a / 4.0;
+      if ((a - b).norm() > own.length) own = {(a - b).norm(), (a + b) / 2};
+    }
+    if (own.length > longest.length && (centroid - near).norm() <= own.length + reach) longest = own;
+  }
+  return longest;
+}
+
 /// A quad mesh whose topology differs from the input's is broken output: refuse
 /// to write it (exit 1), naming where the parameterization failed.
 void require_conforming(const MeshSummary& s, const QuadMeshResult& r) {
@@ -44,21 +67,12 @@ void require_conforming(const MeshSummary& s, const QuadMeshResult& r) {
   // the usual cause: a long end or a protrusion, where every such differential
   // decays and the cells grow until the boundary there collapses
   std::string cause;
-  double longest = 0;
-  Vec3 at = Vec3::Zero();
-  for (const auto& quad : r.quads.quads)
-    for (std::size_t k = 0; k < quad.size(); ++k) {
-      const Vec3& a = r.quads.points[static_cast<std::size_t>(quad[k])];
-      const Vec3& b = r.quads.points[static_cast<std::size_t>(quad[(k + 1) % quad.size()])];
-      if ((a - b).norm() > longest) {
-        longest = (a - b).norm();
-        at = (a + b) / 2;
-      }
-    }
-  if (r.size_requested > 0 && longest > 4 * r.size_requested)
+  const LongestEdge longest =
+      longest_quad_edge(r.quads, Vec3::Zero(), std::numeric_limits<double>::infinity());
+  if (r.size_requested > 0 && longest.length > 4 * r.size_requested)
     cause = fmt::format("; quad edges reach {:.0f} times --size near ({:.6g}, {:.6g}, {:.6g}): the differential is "
                         "small there (a long end or a protrusion), a limit of the method (README Limits)",
-                        longest / r.size_requested, at.x(), at.y(), at.z());
+                        longest.length / r.size_requested, longest.at.x(), longest.at.y(), longest.at.z());
   throw Error(ErrorCode::solver,
               fmt::format("the quad mesh would not be conforming (chi {} and {} boundary loops, the input has {} "
                           "and {}): {} folded triangles and {} incomplete cells are left{}{}; no output was written; "
@@ -106,16 +120,7 @@ void warn_if_far(const MeshSummary& s, const QuadMeshResult& r, double diagonal)
   if (r.max_deviation <= 0 || !(distance > 1.25 * r.max_deviation)) return;
   const Vec3& p = s.quality.hausdorff_at;
   // the longest edge of the quads around that place, against the size asked
-  double longest = 0;
-  for (const auto& quad : r.quads.quads) {
-    Vec3 c = Vec3::Zero();
-    for (int v : quad) c += r.quads.points[static_cast<std::size_t>(v)] / 4.0;
-    double edge = 0;
-    for (std::size_t k = 0; k < 4; ++k)
-      edge = std::max(edge, (r.quads.points[static_cast<std::size_t>(quad[k])] -
-                             r.quads.points[static_cast<std::size_t>(quad[(k + 1) % 4])]).norm());
-    if ((c - p).norm() <= edge + distance) longest = std::max(longest, edge);
-  }
+  const double longest = longest_quad_edge(r.quads, p, distance).length;
   const double ratio = r.size_requested > 0 ? longest / r.size_requested : 0;
   const bool gap = r.extraction.incomplete_cells + r.extraction.degenerate_cells > 0;
   const std::string cause =
