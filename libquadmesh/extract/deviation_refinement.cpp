@@ -1,6 +1,7 @@
 #include "libquadmesh/extract/deviation_refinement.h"
 
 #include "libquadmesh/core/error.h"
+#include "libquadmesh/extract/closest_location.h"
 #include "libquadmesh/extract/quad_chords.h"
 #include "libquadmesh/quality/hausdorff.h"
 #include "libquadmesh/quality/triangle_tree.h"
@@ -48,15 +49,6 @@ std::vector<double> deviation(const TriangleTree& surface, const std::vector<Vec
   return out;
 }
 
-std::array<double, 3> barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 u = b - a, v = c - a, w = p - a;
-  const double uu = u.dot(u), uv = u.dot(v), vv = v.dot(v), wu = w.dot(u), wv = w.dot(v);
-  const double det = uu * vv - uv * uv;
-  if (det <= 0) return {1.0, 0.0, 0.0};
-  const double y = (vv * wu - uv * wv) / det, z = (uu * wv - uv * wu) / det;
-  return {1 - y - z, y, z};
-}
-
 /// Places new points on S: boundary midpoints on S's boundary, the others on S.
 class Placement {
  public:
@@ -72,13 +64,7 @@ class Placement {
   }
 
   std::pair<Vec3, SurfaceLocation> on_surface(const Vec3& guess) const {
-    const auto [p, f] = surface_.closest(guess);
-    const Triangle& t = s_.triangles[static_cast<std::size_t>(f)];
-    SurfaceLocation loc;
-    loc.kind = SurfaceLocation::Kind::face;
-    loc.face = f;
-    loc.barycentric = barycentric(p, point(t[0]), point(t[1]), point(t[2]));
-    return {p, loc};
+    return closest_location(s_, surface_, guess);
   }
 
   std::pair<Vec3, SurfaceLocation> on_boundary(const Vec3& guess) const {

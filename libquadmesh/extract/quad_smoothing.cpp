@@ -1,6 +1,7 @@
 #include "libquadmesh/extract/quad_smoothing.h"
 
 #include "libquadmesh/core/error.h"
+#include "libquadmesh/extract/closest_location.h"
 #include "libquadmesh/quality/quad_quality.h"
 #include "libquadmesh/quality/triangle_tree.h"
 
@@ -12,23 +13,6 @@
 #include <set>
 
 namespace qm {
-
-namespace {
-
-/// Barycentric coordinates of p (on or near the triangle) in triangle t.
-std::array<double, 3> barycentric(const TriangleSoup& s, const Triangle& t, const Vec3& p) {
-  const Vec3& a = s.points[static_cast<std::size_t>(t[0])];
-  const Vec3& b = s.points[static_cast<std::size_t>(t[1])];
-  const Vec3& c = s.points[static_cast<std::size_t>(t[2])];
-  const Vec3 n = (b - a).cross(c - a);
-  const double area = n.squaredNorm();
-  if (area == 0) return {1.0, 0.0, 0.0};
-  const double u = (c - b).cross(p - b).dot(n) / area;
-  const double v = (a - c).cross(p - c).dot(n) / area;
-  return {u, v, 1.0 - u - v};
-}
-
-}  // namespace
 
 QuadSmoothingReport smooth_worst_quads(const TriangleSoup& surface, LatticeQuads& quads,
                                        const std::vector<int>& boundary_loop_of_point,
@@ -100,26 +84,24 @@ QuadSmoothingReport smooth_worst_quads(const TriangleSoup& surface, LatticeQuads
             tries.push_back(here + step * edge * (std::cos(d * M_PI / 4) * x + std::sin(d * M_PI / 4) * y));
       }
       double best = now + 1e-9;
-      std::pair<Vec3, int> chosen{here, -1};
+      bool found = false;
+      std::pair<Vec3, SurfaceLocation> chosen{here, SurfaceLocation{}};
       for (std::size_t t = 0; t < tries.size(); ++t) {
-        if (t == 3 && chosen.second >= 0) break;  // the mean helped: no search
-        const auto [p, face] = tree.closest(tries[t]);
+        if (t == 3 && found) break;  // the mean helped: no search
+        const auto candidate = closest_location(surface, tree, tries[t]);
+        const Vec3& p = candidate.first;
         if (options.max_move > 0 && (p - original.points[static_cast<std::size_t>(v)]).norm() > options.max_move)
           continue;
         if (const double m = local_min(v, p); m > best) {
           best = m;
-          chosen = {p, face};
+          chosen = candidate;
+          found = true;
           if (t < 3) break;
         }
       }
-      if (chosen.second >= 0) {
-        const auto& [p, face] = chosen;
-        quads.points[static_cast<std::size_t>(v)] = p;
-        SurfaceLocation& loc = quads.locations[static_cast<std::size_t>(v)];
-        loc = SurfaceLocation{};
-        loc.kind = SurfaceLocation::Kind::face;
-        loc.face = face;
-        loc.barycentric = barycentric(surface, surface.triangles[static_cast<std::size_t>(face)], p);
+      if (found) {
+        quads.points[static_cast<std::size_t>(v)] = chosen.first;
+        quads.locations[static_cast<std::size_t>(v)] = chosen.second;
         moved.insert(v);
         ++moves;
       }
