@@ -26,20 +26,7 @@ std::size_t split_boundary_chords(TriangleSoup& soup) {
     for (std::size_t e = 0; e < inc.edge_count(); ++e) {
       const auto [a, b] = inc.edges[e];
       if (inc.valence(static_cast<int>(e)) != 2 || !on_boundary[a] || !on_boundary[b]) continue;
-      const int h0 = inc.halfedges[inc.offsets[e]], h1 = inc.halfedges[inc.offsets[e] + 1];
-      if (touched[h0 / 3] || touched[h1 / 3]) continue;  // next pass
-      const int m = static_cast<int>(soup.points.size());
-      soup.points.push_back((soup.points[a] + soup.points[b]) / 2);
-      soup.point_labels.push_back(-1);
-      for (int h : {h0, h1}) {
-        const int f = h / 3, k = h % 3;
-        const Triangle t = soup.triangles[f];
-        const int x = t[k], y = t[(k + 1) % 3], c = t[(k + 2) % 3];
-        soup.triangles[f] = {x, m, c};
-        soup.triangles.push_back({m, y, c});
-        soup.triangle_labels.push_back(soup.triangle_labels[f]);
-        touched[f] = 1;
-      }
+      if (split_edge_at_midpoint(soup, inc, static_cast<int>(e), touched) < 0) continue;  // next pass
       ++pass;
     }
     splits += pass;

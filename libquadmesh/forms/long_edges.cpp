@@ -50,27 +50,9 @@ std::size_t split_long_edges(TriangleSoup& soup, double max_length) {
     std::size_t pass = 0;
     for (const auto& [l, e] : wanted) {
       if (e < 0) continue;
-      bool free = true;
-      for (int i = inc.offsets[static_cast<std::size_t>(e)]; i < inc.offsets[static_cast<std::size_t>(e) + 1]; ++i)
-        free = free && !touched[static_cast<std::size_t>(inc.halfedges[static_cast<std::size_t>(i)] / 3)];
-      if (!free) continue;  // next pass
+      const int m = split_edge_at_midpoint(soup, inc, e, touched);
+      if (m < 0) continue;  // next pass
       const auto [a, b] = inc.edges[static_cast<std::size_t>(e)];
-      const int m = static_cast<int>(soup.points.size());
-      soup.points.push_back((soup.points[static_cast<std::size_t>(a)] + soup.points[static_cast<std::size_t>(b)]) / 2);
-      if (!soup.point_labels.empty()) soup.point_labels.push_back(-1);
-      for (int i = inc.offsets[static_cast<std::size_t>(e)]; i < inc.offsets[static_cast<std::size_t>(e) + 1]; ++i) {
-        const int h = inc.halfedges[static_cast<std::size_t>(i)];
-        const auto f = static_cast<std::size_t>(h / 3);
-        const int k = h % 3;
-        const Triangle t = soup.triangles[f];
-        const int x = t[static_cast<std::size_t>(k)], y = t[static_cast<std::size_t>((k + 1) % 3)],
-                  c = t[static_cast<std::size_t>((k + 2) % 3)];
-        soup.triangles[f] = {x, m, c};
-        soup.triangles.push_back({m, y, c});
-        if (!soup.triangle_labels.empty()) soup.triangle_labels.push_back(soup.triangle_labels[f]);
-        touched[f] = 1;
-        touched.push_back(1);
-      }
       if (const auto it = curve_edge.find(std::minmax(a, b)); it != curve_edge.end()) {
         const CurveEdge whole = soup.cad.edges[it->second];
         soup.cad.edges[it->second] = CurveEdge{whole.a, m, whole.curve};

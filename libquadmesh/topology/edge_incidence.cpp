@@ -39,4 +39,28 @@ EdgeIncidence edge_incidence(const TriangleSoup& soup) {
   return inc;
 }
 
+int split_edge_at_midpoint(TriangleSoup& soup, const EdgeIncidence& inc, int e, std::vector<char>& touched) {
+  const auto first = static_cast<std::size_t>(inc.offsets[static_cast<std::size_t>(e)]);
+  const auto last = static_cast<std::size_t>(inc.offsets[static_cast<std::size_t>(e) + 1]);
+  for (std::size_t i = first; i < last; ++i)
+    if (touched[static_cast<std::size_t>(inc.halfedges[i] / 3)]) return -1;
+  const auto [a, b] = inc.edges[static_cast<std::size_t>(e)];
+  const int m = static_cast<int>(soup.points.size());
+  soup.points.push_back((soup.points[static_cast<std::size_t>(a)] + soup.points[static_cast<std::size_t>(b)]) / 2);
+  if (!soup.point_labels.empty()) soup.point_labels.push_back(-1);
+  for (std::size_t i = first; i < last; ++i) {
+    const int h = inc.halfedges[i];
+    const auto f = static_cast<std::size_t>(h / 3);
+    const auto k = static_cast<std::size_t>(h % 3);
+    const Triangle t = soup.triangles[f];
+    const int x = t[k], y = t[(k + 1) % 3], c = t[(k + 2) % 3];
+    soup.triangles[f] = {x, m, c};
+    soup.triangles.push_back({m, y, c});
+    if (!soup.triangle_labels.empty()) soup.triangle_labels.push_back(soup.triangle_labels[f]);
+    touched[f] = 1;
+    touched.push_back(1);
+  }
+  return m;
+}
+
 }  // namespace qm

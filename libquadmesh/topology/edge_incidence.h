@@ -32,4 +32,11 @@ inline int halfedge_target(const TriangleSoup& soup, int h) {
 /// Builds the edge incidence in O(F log F).
 EdgeIncidence edge_incidence(const TriangleSoup& soup);
 
+/// Splits edge e of `inc` (built on `soup`) at its midpoint, each of its triangles
+/// into two, unless one of them is already `touched` (split in this pass: `inc` no
+/// longer describes it); returns the new point, or -1. The new point gets label -1
+/// and new triangles their parent's label (when the soup has labels); the split
+/// triangles and the new ones are marked in `touched` (sized like the triangles).
+int split_edge_at_midpoint(TriangleSoup& soup, const EdgeIncidence& inc, int e, std::vector<char>& touched);
+
 }  // namespace qm
