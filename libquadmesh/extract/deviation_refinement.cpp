@@ -41,10 +41,9 @@ std::vector<double> deviation(const TriangleTree& surface, const std::vector<Vec
   }
   for (std::size_t k = 0; k < q.quads.size(); ++k) {
     const auto& c = q.quads[k];
-    auto p = [&](int i) { return q.points[static_cast<std::size_t>(c[static_cast<std::size_t>(i % 4)])]; };
-    std::vector<Vec3> samples{(p(0) + p(1) + p(2) + p(3)) / 4, (p(0) + p(1) + p(2)) / 3, (p(0) + p(2) + p(3)) / 3};
-    for (int i = 0; i < 4; ++i) samples.push_back((p(i) + p(i + 1)) / 2);
-    for (const Vec3& s : samples) out[k] = std::max(out[k], (surface.closest(s).first - s).norm());
+    const std::array<Vec3, 4> corners{q.points[static_cast<std::size_t>(c[0])], q.points[static_cast<std::size_t>(c[1])],
+                                      q.points[static_cast<std::size_t>(c[2])], q.points[static_cast<std::size_t>(c[3])]};
+    for (const Vec3& s : quad_deviation_samples(corners)) out[k] = std::max(out[k], (surface.closest(s).first - s).norm());
   }
   return out;
 }
@@ -118,6 +117,11 @@ std::pair<std::size_t, double> inverted_quads(const LatticeQuads& quads) {
 }
 
 }  // namespace
+
+std::array<Vec3, 7> quad_deviation_samples(const std::array<Vec3, 4>& p) {
+  return {(p[0] + p[1] + p[2] + p[3]) / 4, (p[0] + p[1] + p[2]) / 3, (p[0] + p[2] + p[3]) / 3, (p[0] + p[1]) / 2,
+          (p[1] + p[2]) / 2, (p[2] + p[3]) / 2, (p[3] + p[0]) / 2};
+}
 
 std::vector<double> quad_deviation(const TriangleSoup& surface, const LatticeQuads& quads) {
   return deviation(TriangleTree(surface.points, surface.triangles), surface_samples(surface.points, surface.triangles, {2}), quads);

@@ -12,6 +12,7 @@
 #include "libquadmesh/extract/lattice_quads.h"
 #include "libquadmesh/param/surface_adjacency.h"
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -39,6 +40,11 @@ struct DeviationRefinementReport {
   bool tolerance_met = false;   ///< after the rounds within max_quads (before the min_quads rounds)
   int rounds_undone = 0;        ///< a round that turned a quad over (or too thin) is undone, and the refinement stops
 };
+
+/// The points of a quad (corners in order) whose distance to S is its side of
+/// the deviation: its centre, the centroids of its triangles v0v1v2 and v0v2v3,
+/// and its edge midpoints (the corners are on S).
+std::array<Vec3, 7> quad_deviation_samples(const std::array<Vec3, 4>& corners);
 
 /// Per quad, the estimated deviation: the largest distance from a sample of the quad
 /// (its two triangles split along the diagonal v0v2, as in the quality module) to S,

@@ -118,6 +118,11 @@ double min_scaled_jacobian(const LatticeQuads& quads) {
   return quad_quality(polygon_mesh(quads), nullptr).min_scaled_jacobian;
 }
 
+/// A deviation more than this many times the tolerance is out of the reach of the
+/// local remedies: two more halvings of the cells by the refinement, and corners
+/// moved by the fitting, which move by about one quad edge.
+constexpr double within_reach = 16.0;
+
 /// Size adaptivity: splits chords where the quads deviate from S by more than the
 /// tolerance (deviation_refinement.h), at most 10% above the target count. When
 /// that is not enough, coarser base lattices (`rerun(density)`: the same attempt
@@ -152,7 +157,7 @@ void refine_where_deviating(QuadMeshResult& best, const QuadMeshOptions& options
     const ExtractionReport& x = best.extraction;
     if (best.refinement.tolerance_met ||
         best.refinement.deviation_after > 0.95 * best.refinement.deviation_before ||
-        best.refinement.deviation_after > 16 * tolerance ||
+        best.refinement.deviation_after > within_reach * tolerance ||
         x.bad_triangles + x.incomplete_cells + x.degenerate_cells > 0)
       break;
     stages.next("refinement", fmt::format("largest deviation {:.4g}: a coarser base lattice ({:.0f}% of the quads) "
@@ -380,6 +385,13 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
     QuadSmoothingOptions smoothing;
     smoothing.max_move = 0.5 * best.size_requested;
     best.smoothing = smooth_worst_quads(best.surface, best.quads, best.boundary_loop_of_point, smoothing);
+  }
+  if (best.max_deviation > 0 && !best.quads.quads.empty() &&
+      best.refinement.deviation_after <= within_reach * best.max_deviation) {
+    stages.next("fitting", "moving corners onto S where the quads cut across it");
+    QuadFittingOptions fitting;
+    fitting.tolerance = best.max_deviation;
+    best.fitting = fit_quads_to_surface(best.surface, best.quads, best.boundary_loop_of_point, fitting);
   }
   stages.close();
   best.timings = r.timings;

@@ -5,6 +5,7 @@
 
 #include "libquadmesh/extract/deviation_refinement.h"
 #include "libquadmesh/extract/lattice_quads.h"
+#include "libquadmesh/extract/quad_fitting.h"
 #include "libquadmesh/extract/quad_smoothing.h"
 #include "libquadmesh/forms/symmetric_forms.h"
 #include "libquadmesh/param/branch_points.h"
@@ -78,6 +79,7 @@ struct QuadMeshResult {
   double max_deviation = 0.0;    ///< the tolerance used (0: refinement off)
   DeviationRefinementReport refinement;
   QuadSmoothingReport smoothing;  ///< the worst quads' interior points moved on S
+  QuadFittingReport fitting;      ///< corners moved onto S where the quads cut across it (max_deviation > 0)
   std::vector<std::pair<std::string, double>> timings;  ///< seconds per stage
   /// Edges of the input longer than the target size, split (forms/long_edges.h);
   /// when > 0 the input as it is was meshed too, and the better result kept.

@@ -234,6 +234,21 @@ TEST_CASE("kitten with two holes: genus 1, two zeros of order 1") {
   CHECK(r.zeros.doubled_order_sum == 4);
 }
 
+TEST_CASE("fertility: corners moved onto its extremities bring the quads within 1% of the diagonal") {
+  const TriangleSoup input = analysed(test::shared_mesh("fertility-3holes.obj"));
+  const double diagonal = bounding_box_diagonal(input.points, input.triangles);
+  QuadMeshOptions options;
+  options.size_relative = 0.015;
+  const QuadMeshResult r = mesh_quads(input, options);
+  check_result(input, r, -9, 3);
+  // after the chord refinement, 1.4% of the diagonal where the quads are 3 times the size
+  CHECK(r.fitting.deviation_before > 0.01 * diagonal);
+  CHECK(r.fitting.moved_points > 0);
+  CHECK(r.fitting.deviation_after < 0.6 * r.fitting.deviation_before);
+  const QuadQuality q = quad_quality(polygon_mesh(r.quads), &input);
+  CHECK(q.hausdorff_rel < 0.01);
+}
+
 TEST_CASE("aqua-center: splitting chords brings the quads within the tolerance, singular vertices unchanged") {
   const TriangleSoup input = analysed(test::shared_mesh("aqua-center.off"));
   const double diagonal = bounding_box_diagonal(input.points, input.triangles);

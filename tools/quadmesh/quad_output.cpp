@@ -156,6 +156,9 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
   j["smoothing"] = {{"moved_points", result.smoothing.moved_points},
                     {"min_scaled_jacobian_before", result.smoothing.min_before},
                     {"min_scaled_jacobian_after", result.smoothing.min_after}};
+  j["fitting"] = {{"moved_points", result.fitting.moved_points},
+                  {"deviation_before", result.fitting.deviation_before},
+                  {"deviation_after", result.fitting.deviation_after}};
   j["long_edges"] = {{"split", result.long_edges_split},
                      {"kept", result.long_edges_split == 0 ? "none split" : result.long_edges_kept ? "split" : "input"}};
   j["refinement"] = {{"enabled", result.max_deviation > 0},
@@ -195,6 +198,10 @@ void print_summary(const MeshSummary& s) {
                rf["chords_split"].get<std::size_t>(), rf["quads_added"].get<std::size_t>(),
                100 * rf["base_density"].get<double>(), rf["deviation_before"].get<double>(),
                rf["deviation_after"].get<double>(), rf["max_deviation"].get<double>());
+  if (const Json& ft = s.report["fitting"]; ft["moved_points"].get<std::size_t>() > 0)
+    fmt::print("fitting             {} corners moved onto S, deviation {:.3g} -> {:.3g}\n",
+               ft["moved_points"].get<std::size_t>(), ft["deviation_before"].get<double>(),
+               ft["deviation_after"].get<double>());
   fmt::print("time                {:.2f} s\n", s.seconds);
 }
 
