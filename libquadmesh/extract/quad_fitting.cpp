@@ -11,9 +11,11 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <set>
+#include <vector>
 
 namespace qm {
 
@@ -88,10 +90,10 @@ double squared_distance_to_quad(const Vec3& x, const std::array<Vec3, 4>& c) {
 
 /// What a position of one point gives locally.
 struct LocalFit {
-  double deviation = 0;      ///< largest distance between the quads at the point and S, both ways (see evaluate)
-  double min_jacobian = 1;   ///< smallest corner scaled Jacobian of the ring's quads
-  std::vector<int> nearest;       ///< per local sample, its nearest quad of the ring
-  std::vector<double> distance;   ///< and its distance to it
+  double deviation = 0;          ///< largest distance between the quads at the point and S, both ways (see evaluate)
+  double min_jacobian = 1;       ///< smallest corner scaled Jacobian of the ring's quads
+  std::vector<int> nearest;      ///< per local sample, its nearest quad of the ring
+  std::vector<double> distance;  ///< and its distance to it
 };
 
 }  // namespace
