@@ -15,36 +15,18 @@ namespace qm {
 
 namespace {
 
-/// the quads' triangles v0v1v2 and v0v2v3, with the quad as id
-TriangleTree quad_index(const LatticeQuads& q) {
-  TriangleTree index;
-  for (std::size_t k = 0; k < q.quads.size(); ++k) {
-    const auto& c = q.quads[k];
-    auto p = [&](int i) { return q.points[static_cast<std::size_t>(c[static_cast<std::size_t>(i)])]; };
-    index.add(p(0), p(1), p(2), static_cast<int>(k));
-    index.add(p(0), p(2), p(3), static_cast<int>(k));
-  }
-  index.build();
-  return index;
-}
-
 std::vector<double> deviation(const TriangleTree& surface, const std::vector<Vec3>& surface_samples,
                               const LatticeQuads& q) {
   std::vector<double> out(q.quads.size(), 0.0);
   if (q.quads.empty()) return out;
-  const TriangleTree quads = quad_index(q);
+  const TriangleTree quads = quad_triangle_tree(q);
   if (quads.empty()) return out;
   for (const Vec3& s : surface_samples) {
     const auto [p, k] = quads.closest(s);
     double& d = out[static_cast<std::size_t>(k)];
     d = std::max(d, (p - s).norm());
   }
-  for (std::size_t k = 0; k < q.quads.size(); ++k) {
-    const auto& c = q.quads[k];
-    const std::array<Vec3, 4> corners{q.points[static_cast<std::size_t>(c[0])], q.points[static_cast<std::size_t>(c[1])],
-                                      q.points[static_cast<std::size_t>(c[2])], q.points[static_cast<std::size_t>(c[3])]};
-    for (const Vec3& s : quad_deviation_samples(corners)) out[k] = std::max(out[k], (surface.closest(s).first - s).norm());
-  }
+  for (std::size_t k = 0; k < q.quads.size(); ++k) out[k] = std::max(out[k], quad_to_surface(surface, quad_corners(q, k)));
   return out;
 }
 
@@ -117,6 +99,23 @@ std::pair<std::size_t, double> inverted_quads(const LatticeQuads& quads) {
 }
 
 }  // namespace
+
+TriangleTree quad_triangle_tree(const LatticeQuads& quads) {
+  TriangleTree index;
+  for (std::size_t k = 0; k < quads.quads.size(); ++k) {
+    const std::array<Vec3, 4> c = quad_corners(quads, k);
+    index.add(c[0], c[1], c[2], static_cast<int>(k));
+    index.add(c[0], c[2], c[3], static_cast<int>(k));
+  }
+  index.build();
+  return index;
+}
+
+double quad_to_surface(const TriangleTree& surface, const std::array<Vec3, 4>& corners) {
+  double d = 0;
+  for (const Vec3& s : quad_deviation_samples(corners)) d = std::max(d, (surface.closest(s).first - s).norm());
+  return d;
+}
 
 std::array<Vec3, 7> quad_deviation_samples(const std::array<Vec3, 4>& p) {
   return {(p[0] + p[1] + p[2] + p[3]) / 4, (p[0] + p[1] + p[2]) / 3, (p[0] + p[2] + p[3]) / 3, (p[0] + p[1]) / 2,

@@ -11,6 +11,7 @@
 #include "libquadmesh/core/triangle_soup.h"
 #include "libquadmesh/extract/lattice_quads.h"
 #include "libquadmesh/param/surface_adjacency.h"
+#include "libquadmesh/quality/triangle_tree.h"
 
 #include <array>
 #include <cstddef>
@@ -45,6 +46,14 @@ struct DeviationRefinementReport {
 /// the deviation: its centre, the centroids of its triangles v0v1v2 and v0v2v3,
 /// and its edge midpoints (the corners are on S).
 std::array<Vec3, 7> quad_deviation_samples(const std::array<Vec3, 4>& corners);
+
+/// The quads' triangles v0v1v2 and v0v2v3 (split as the quality module splits
+/// them), each with its quad as id (degenerate ones left out: it may be empty).
+TriangleTree quad_triangle_tree(const LatticeQuads& quads);
+
+/// The quad's side of the deviation: the largest distance from its
+/// quad_deviation_samples() to S (`surface`: a tree on S's triangles).
+double quad_to_surface(const TriangleTree& surface, const std::array<Vec3, 4>& corners);
 
 /// Per quad, the estimated deviation: the largest distance from a sample of the quad
 /// (its two triangles split along the diagonal v0v2, as in the quality module) to S,

@@ -330,4 +330,10 @@ PolygonMesh polygon_mesh(const LatticeQuads& quads) {
   return mesh;
 }
 
+std::array<Vec3, 4> quad_corners(const LatticeQuads& quads, std::size_t k) {
+  const std::array<int, 4>& q = quads.quads[k];
+  return {quads.points[static_cast<std::size_t>(q[0])], quads.points[static_cast<std::size_t>(q[1])],
+          quads.points[static_cast<std::size_t>(q[2])], quads.points[static_cast<std::size_t>(q[3])]};
+}
+
 }  // namespace qm

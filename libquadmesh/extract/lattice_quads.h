@@ -20,6 +20,8 @@
 #include "libquadmesh/param/surface_adjacency.h"
 #include "libquadmesh/quality/quad_quality.h"
 
+#include <array>
+
 namespace qm {
 
 /// Where a quad vertex lies on S.
@@ -49,6 +51,9 @@ struct ExtractionReport {
 
 /// The quads as a PolygonMesh (for the quality module).
 PolygonMesh polygon_mesh(const LatticeQuads& quads);
+
+/// The corner points of quad k, in order.
+std::array<Vec3, 4> quad_corners(const LatticeQuads& quads, std::size_t k);
 
 /// fixed-point units per lattice unit
 constexpr std::int64_t lattice_scale = std::int64_t(1) << 30;

@@ -69,11 +69,9 @@ struct QuadStar {
 
   /// The corners of quad k with point v at p.
   std::array<Vec3, 4> corners(int k, int v, const Vec3& p) const {
-    std::array<Vec3, 4> c;
-    for (std::size_t i = 0; i < 4; ++i) {
-      const int u = quads.quads[static_cast<std::size_t>(k)][i];
-      c[i] = u == v ? p : quads.points[static_cast<std::size_t>(u)];
-    }
+    std::array<Vec3, 4> c = quad_corners(quads, static_cast<std::size_t>(k));
+    for (std::size_t i = 0; i < 4; ++i)
+      if (quads.quads[static_cast<std::size_t>(k)][i] == v) c[i] = p;
     return c;
   }
 };
@@ -107,35 +105,21 @@ QuadFittingReport fit_quads_to_surface(const TriangleSoup& surface, LatticeQuads
   if (quads.quads.empty() || surface.triangles.empty()) return report;
   const QuadStar star(quads);
   const TriangleTree surface_tree(surface.points, surface.triangles);
-  // the largest distance from the samples of quad k (point v at p) to S
-  const auto quad_to_surface = [&](int k, int v, const Vec3& p) {
-    double d = 0;
-    for (const Vec3& x : quad_deviation_samples(star.corners(k, v, p)))
-      d = std::max(d, std::sqrt(surface_tree.squared_distance(x)));
-    return d;
-  };
-  // the deviation of quad_deviation(), in two parts: per quad, its samples' largest
-  // distance to S; per sample of S, its nearest quad and the distance to it
+  const TriangleTree index = quad_triangle_tree(quads);
+  if (surface_tree.empty() || index.empty()) return report;  // all degenerate: nothing to measure
+  // the deviation of quad_deviation(), in two parts: per quad, its side
+  // (quad_to_surface); per sample of S, its nearest quad and the distance to it
   std::vector<double> quad_side(quads.quads.size());
-  for (std::size_t k = 0; k < quads.quads.size(); ++k) quad_side[k] = quad_to_surface(static_cast<int>(k), -1, Vec3::Zero());
+  for (std::size_t k = 0; k < quads.quads.size(); ++k) quad_side[k] = quad_to_surface(surface_tree, quad_corners(quads, k));
   const std::vector<Vec3> samples = surface_samples(surface.points, surface.triangles, {2});
   std::vector<double> distance(samples.size());
   std::vector<int> nearest(samples.size());
   std::vector<std::vector<int>> samples_of(quads.quads.size());
-  {
-    TriangleTree index;
-    for (std::size_t k = 0; k < quads.quads.size(); ++k) {
-      const auto c = star.corners(static_cast<int>(k), -1, Vec3::Zero());
-      index.add(c[0], c[1], c[2], static_cast<int>(k));
-      index.add(c[0], c[2], c[3], static_cast<int>(k));
-    }
-    index.build();
-    for (std::size_t s = 0; s < samples.size(); ++s) {
-      const auto [p, k] = index.closest(samples[s]);
-      distance[s] = (p - samples[s]).norm();
-      nearest[s] = k;
-      samples_of[static_cast<std::size_t>(k)].push_back(static_cast<int>(s));
-    }
+  for (std::size_t s = 0; s < samples.size(); ++s) {
+    const auto [p, k] = index.closest(samples[s]);
+    distance[s] = (p - samples[s]).norm();
+    nearest[s] = k;
+    samples_of[static_cast<std::size_t>(k)].push_back(static_cast<int>(s));
   }
   // each sample's distance is to the quad it is assigned to, so after moves this
   // is an upper bound of quad_deviation()'s largest value (equal unless a sample
@@ -166,7 +150,8 @@ QuadFittingReport fit_quads_to_surface(const TriangleSoup& surface, LatticeQuads
     LocalFit fit;
     fit.min_jacobian = star.min_scaled_jacobian(ring, v, p);
     if (fit.min_jacobian < floor) return fit;
-    for (int k : star.quads_at[static_cast<std::size_t>(v)]) fit.deviation = std::max(fit.deviation, quad_to_surface(k, v, p));
+    for (int k : star.quads_at[static_cast<std::size_t>(v)])
+      fit.deviation = std::max(fit.deviation, quad_to_surface(surface_tree, star.corners(k, v, p)));
     std::vector<std::array<Vec3, 4>> ring_corners;
     for (int k : ring) ring_corners.push_back(star.corners(k, v, p));
     for (int s : local) {
@@ -242,7 +227,7 @@ QuadFittingReport fit_quads_to_surface(const TriangleSoup& surface, LatticeQuads
       ++moves;
       // the quads at the point and their samples, as evaluated
       for (int k : star.quads_at[static_cast<std::size_t>(best.v)]) {
-        quad_side[static_cast<std::size_t>(k)] = quad_to_surface(k, -1, Vec3::Zero());
+        quad_side[static_cast<std::size_t>(k)] = quad_to_surface(surface_tree, quad_corners(quads, static_cast<std::size_t>(k)));
         samples_of[static_cast<std::size_t>(k)].clear();
       }
       for (std::size_t i = 0; i < best.local.size(); ++i) {
