@@ -157,27 +157,38 @@ TEST_CASE("mesh: pure quads with the input's topology, quality and groups (plate
   expect_quad_mesh(test::shared_mesh("kitten-2holes.obj"), "1.5%", -2, 2, {"boundary_0", "boundary_1"});
 }
 
+/// `quadmesh mesh` on a .geo text written to `dir`, with `-q` and `--report`: it
+/// exits 0 and writes the mesh; the run and the report.
+struct WrittenMesh {
+  Run run;
+  nlohmann::json report;
+};
+WrittenMesh mesh_geo(const std::string& dir, const std::string& geo, const std::string& size) {
+  const std::string input = test::write_text(dir, "input.geo", geo);
+  const std::string output = dir + "/out.msh", report = dir + "/report.json";
+  const Run run = quadmesh("mesh " + quoted(input) + " -o " + quoted(output) + " --size " + size + " -q --report " +
+                           quoted(report));
+  CHECK(run.status == 0);
+  CHECK(std::filesystem::exists(output));
+  return {run, std::filesystem::exists(report) ? nlohmann::json::parse(slurp(report)) : nlohmann::json()};
+}
+
 TEST_CASE("mesh: quads far from the input on a long end are written, with one warning line that names the place") {
   // an L-plate whose arm is two widths long: the form decays along it, the quads at
   // its end are 20 times the size and 17% of the diagonal from it
-  const std::string dir = test::scratch_dir("cli_far");
-  const std::string plate = test::write_text(dir, "l-plate.geo",
+  const WrittenMesh m = mesh_geo(test::scratch_dir("cli_far"),
       "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 80, 40};\n"
       "Rectangle(100) = {40, 20, 0, 80, 40};\n"
       "BooleanDifference{ Surface{1}; Delete; }{ Surface{100}; Delete; }\n"
       "Disk(2) = {35.06, 10.41, 0, 4.16};\nDisk(3) = {32.09, 26.76, 0, 4.78};\n"
-      "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:3}; Delete; }\n");
-  const std::string output = dir + "/out.msh", report = dir + "/report.json";
-  const Run run = quadmesh("mesh " + quoted(plate) + " -o " + quoted(output) + " --size 1.5% -q --report " +
-                           quoted(report));
-  CHECK(run.status == 0);
-  CHECK(std::filesystem::exists(output));
-  const auto lines = run.error_lines();
+      "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:3}; Delete; }\n",
+      "1.5%");
+  const auto lines = m.run.error_lines();
   REQUIRE(lines.size() == 1);
   CHECK(lines[0].rfind("quadmesh: warning: the quads are up to ", 0) == 0);
   CHECK(lines[0].find(" asked (--max-deviation)") != std::string::npos);
   CHECK(lines[0].find(" times --size: the differential is small there") != std::string::npos);
-  const auto q = nlohmann::json::parse(slurp(report))["quality"];
+  const auto& q = m.report["quality"];
   CHECK(q["hausdorff_rel"].get<double>() > 0.01);
   // the place: the arm's end (x = 80)
   REQUIRE(q["hausdorff_at"].size() == 3);
@@ -186,7 +197,6 @@ TEST_CASE("mesh: quads far from the input on a long end are written, with one wa
   REQUIRE(at != std::string::npos);
   CHECK(std::atof(lines[0].c_str() + at + std::string(" near (").size()) > 60.0);
 }
-
 
 TEST_CASE("mesh: inverted quads are written, with one warning line that names the first, even with -q") {
   // bunny-open at 1.2% without refinement and without smoothing (which mends
@@ -210,23 +220,18 @@ TEST_CASE("mesh: cells the extraction drops leave a gap, written with one warnin
   // a 120 x 40 plate with six holes and rounded corners, meshed coarsely (2.5%):
   // beside one hole the untangling leaves a fold it cannot remove (a known defect),
   // and the cells over it are dropped
-  const std::string dir = test::scratch_dir("cli_dropped");
-  const std::string plate = test::write_text(dir, "plate.geo",
+  const WrittenMesh m = mesh_geo(test::scratch_dir("cli_dropped"),
       "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 120, 40, 6.66667};\n"
       "Disk(2) = {49.03, 18.53, 0, 7.14};\nDisk(3) = {15.99, 15.23, 0, 4.78};\n"
       "Disk(4) = {89.74, 26.40, 0, 6.88};\nDisk(5) = {33.22, 28.93, 0, 7.16};\n"
       "Disk(6) = {74.47, 18.22, 0, 7.33};\nDisk(7) = {108.26, 11.42, 0, 3.95};\n"
-      "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:7}; Delete; }\n");
-  const std::string output = dir + "/out.msh", report = dir + "/report.json";
-  const Run run = quadmesh("mesh " + quoted(plate) + " -o " + quoted(output) + " --size 2.5% -q --report " +
-                           quoted(report));
-  CHECK(run.status == 0);
-  CHECK(std::filesystem::exists(output));
-  const auto j = nlohmann::json::parse(slurp(report));
+      "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:7}; Delete; }\n",
+      "2.5%");
+  const auto& j = m.report;
   const int dropped = j["extraction"]["incomplete_cells"].get<int>() + j["extraction"]["degenerate_cells"].get<int>();
   CHECK(dropped > 0);
   // the gap's line first; the distance the gap leaves is the next warning
-  const auto lines = run.error_lines();
+  const auto lines = m.run.error_lines();
   REQUIRE(lines.size() == 2);
   CHECK(lines[0].rfind("quadmesh: warning: " + std::to_string(dropped) + " lattice cells could not be made into quads, the first near (", 0) == 0);
   CHECK(lines[1].rfind("quadmesh: warning: the quads are up to ", 0) == 0);
