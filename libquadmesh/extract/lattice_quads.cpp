@@ -3,6 +3,7 @@
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/core/union_find.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <unordered_map>
@@ -334,6 +335,22 @@ std::array<Vec3, 4> quad_corners(const LatticeQuads& quads, std::size_t k) {
   const std::array<int, 4>& q = quads.quads[k];
   return {quads.points[static_cast<std::size_t>(q[0])], quads.points[static_cast<std::size_t>(q[1])],
           quads.points[static_cast<std::size_t>(q[2])], quads.points[static_cast<std::size_t>(q[3])]};
+}
+
+std::vector<int> stray_boundary_points(const LatticeQuads& quads, const std::vector<int>& boundary_loop_of_point) {
+  QM_ASSERT(boundary_loop_of_point.size() == quads.points.size());
+  std::map<std::pair<int, int>, int> uses;
+  for (const auto& quad : quads.quads)
+    for (std::size_t k = 0; k < 4; ++k) ++uses[std::minmax(quad[k], quad[(k + 1) % 4])];
+  std::vector<char> stray(quads.points.size(), 0);
+  for (const auto& [edge, count] : uses)
+    if (count == 1)
+      for (const int v : {edge.first, edge.second})
+        if (boundary_loop_of_point[static_cast<std::size_t>(v)] < 0) stray[static_cast<std::size_t>(v)] = 1;
+  std::vector<int> out;
+  for (std::size_t v = 0; v < stray.size(); ++v)
+    if (stray[v]) out.push_back(static_cast<int>(v));
+  return out;
 }
 
 }  // namespace qm

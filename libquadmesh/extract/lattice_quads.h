@@ -55,6 +55,12 @@ PolygonMesh polygon_mesh(const LatticeQuads& quads);
 /// The corner points of quad k, in order.
 std::array<Vec3, 4> quad_corners(const LatticeQuads& quads, std::size_t k);
 
+/// The points on the quads' own boundary (an edge of one quad only) that do not lie
+/// on a boundary of S (`boundary_loop_of_point[v] < 0`): a boundary-aligned mesh has
+/// none; one that has some leaves part of S uncovered or covers part twice, even
+/// when its Euler characteristic and loop count come out as the input's.
+std::vector<int> stray_boundary_points(const LatticeQuads& quads, const std::vector<int>& boundary_loop_of_point);
+
 /// fixed-point units per lattice unit
 constexpr std::int64_t lattice_scale = std::int64_t(1) << 30;
 

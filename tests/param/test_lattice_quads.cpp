@@ -1,6 +1,7 @@
 // Quad extraction (method.md section 9) on maps whose grid is known exactly:
 // lattice points on vertices, on edges and across a cut are the common case.
 #include "libquadmesh/extract/lattice_quads.h"
+#include "tests/support/grid_quads.h"
 #include "tests/support/test_meshes.h"
 
 #include <doctest/doctest.h>
@@ -121,4 +122,22 @@ TEST_CASE("a map blown up over millions of cells is refused triangle by triangle
   const LatticeQuads fine = extract_lattice_quads(soup, adjacency, affine_map(soup, 128.0, 0.0), report);
   CHECK(report.bad_triangles == 0);
   CHECK(fine.quads.size() == 128u * 128u);
+}
+
+TEST_CASE("stray boundary points: the quads' own boundary off the boundary of S") {
+  // 3 x 3 quads on the unit square, its outer ring on boundary loop 0
+  const LatticeQuads full = test::grid_quads(test::grid(3), 3);
+  const std::vector<int> loop_of = test::unit_square_boundary(full);
+  CHECK(stray_boundary_points(full, loop_of).empty());
+  // without the middle quad, its 4 corners (interior points of S) are on a hole
+  // the input does not have
+  LatticeQuads holed = full;
+  holed.quads.erase(holed.quads.begin() + 4);
+  const std::vector<int> stray = stray_boundary_points(holed, loop_of);
+  CHECK(stray.size() == 4);
+  for (int v : stray) CHECK(loop_of[static_cast<std::size_t>(v)] < 0);
+  // without a corner quad: only its inner corner is off the square's boundary
+  LatticeQuads notched = full;
+  notched.quads.erase(notched.quads.begin());
+  CHECK(stray_boundary_points(notched, loop_of).size() == 1);
 }
