@@ -6,6 +6,7 @@
 #include "libquadmesh/forms/long_edges.h"
 #include "libquadmesh/forms/remesh.h"
 #include "libquadmesh/param/form_choice.h"
+#include "libquadmesh/param/rounding_scale.h"
 #include "libquadmesh/param/surface_forms.h"
 #include "libquadmesh/param/barrier_untangle.h"
 #include "libquadmesh/param/untangle.h"
@@ -123,6 +124,12 @@ double min_scaled_jacobian(const LatticeQuads& quads) {
 /// moved by the fitting, which move by about one quad edge.
 constexpr double within_reach = 16.0;
 
+/// Quad counts, as factors of the faulty attempt's own, at which it is rounded
+/// again, nearest first. With the rounding window (6% of the count) the base
+/// lattice stays within 11% of the target (item 2 allows 15%); the refinement
+/// never takes the count above 1.1 x the target.
+constexpr double rounding_retry_densities[] = {0.97, 1.03, 0.95, 1.05};
+
 /// Size adaptivity: splits chords where the quads deviate from S by more than the
 /// tolerance (deviation_refinement.h), at most 10% above the target count. When
 /// that is not enough, coarser base lattices (`rerun(density)`: the same attempt
@@ -134,7 +141,7 @@ void refine_where_deviating(QuadMeshResult& best, const QuadMeshOptions& options
                             Stages& stages, const Rerun& rerun) {
   const double tolerance = options.max_deviation_relative > 0 ? options.max_deviation_relative * diagonal
                            : options.max_deviation > 0        ? options.max_deviation
-                                                              : 0.5 * best.size;
+                                                              : 0.5 * best.size * std::sqrt(best.base_density);  // of the requested size
   auto refine = [&](QuadMeshResult& a) {
     DeviationRefinementOptions refinement;
     refinement.tolerance = tolerance;
@@ -158,13 +165,14 @@ void refine_where_deviating(QuadMeshResult& best, const QuadMeshOptions& options
     if (best.refinement.tolerance_met ||
         best.refinement.deviation_after > 0.95 * best.refinement.deviation_before ||
         best.refinement.deviation_after > within_reach * tolerance ||
-        x.bad_triangles + x.incomplete_cells + x.degenerate_cells > 0)
+        x.bad_triangles + x.incomplete_cells + x.degenerate_cells + best.stray_boundary_points > 0)
       break;
     stages.next("refinement", fmt::format("largest deviation {:.4g}: a coarser base lattice ({:.0f}% of the quads) "
                                            "to pay for more refinement",
                                            best.refinement.deviation_after, 100 * density));
     QuadMeshResult a = rerun(density);
-    if (a.quads.quads.empty() || topology_of(polygon_mesh(a.quads)) != topology) continue;
+    if (a.quads.quads.empty() || topology_of(polygon_mesh(a.quads)) != topology || a.stray_boundary_points > 0)
+      continue;
     refine(a);
     // geometric fidelity is not bought with element shape: a coarser base is kept
     // only if its worst quad stays as good (or at least at the usual 0.3 floor)
@@ -175,6 +183,42 @@ void refine_where_deviating(QuadMeshResult& best, const QuadMeshOptions& options
     }
   }
 }
+
+/// Counts (and locates the first of) the quads' boundary points off S's boundary.
+void note_stray_boundary(QuadMeshResult& r) {
+  const std::vector<int> stray = stray_boundary_points(r.quads, r.boundary_loop_of_point);
+  r.stray_boundary_points = stray.size();
+  if (!stray.empty()) r.first_stray_point = r.quads.points[static_cast<std::size_t>(stray.front())];
+}
+
+/// What is wrong with a result, worst first (lexicographic; lower is better): the
+/// topology is not the input's, inverted quads, dropped cells and quad boundary
+/// points off S's boundary (stray_boundary_points), issue 4's shape
+/// criteria not met (min scaled Jacobian >= 0.3, mean angle deviation <= 5
+/// degrees), then the smallest scaled Jacobian (negated).
+std::tuple<int, std::size_t, std::size_t, int, double> shortcomings(const QuadMeshResult& r,
+                                                                    std::pair<int, int> input_topology) {
+  const QuadQuality q = quad_quality(polygon_mesh(r.quads), nullptr);
+  const bool topology = q.euler_characteristic == input_topology.first && q.boundary_loops == input_topology.second;
+  const int unmet = (q.min_scaled_jacobian < 0.3 ? 1 : 0) + (q.angle_dev_mean > 5.0 ? 1 : 0);
+  return {topology ? 0 : 1, q.inverted,
+          r.extraction.incomplete_cells + r.extraction.degenerate_cells + r.stray_boundary_points, unmet,
+          -q.min_scaled_jacobian};
+}
+
+/// The loops of H_1(S) whose periods the quantization rounds (forms/named_loops.h).
+PeriodLoops period_loops(const TriangleSoup& soup) {
+  const NamedLoops named = named_loops(to_surface_mesh(soup));
+  PeriodLoops loops;
+  loops.boundaries = named.boundaries;
+  loops.bridges = named.bridges;
+  loops.handles = named.handles;
+  return loops;
+}
+
+/// How far from the requested size the scale may move to round the periods better
+/// (rounding_scale.h): 3% in s, 6% in the quad count.
+constexpr double rounding_window = 0.03;
 
 /// One run of the whole pipeline on one triangulation of S.
 QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, const ProgressCallback& progress) {
@@ -228,14 +272,17 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
   } else {
     r.coefficients = most_uniform_combination(soup, basis);
   }
-  // One attempt with the coefficients c: everything after the forms. With --form
-  // auto, when the quads do not keep the input's Euler characteristic and boundary
-  // loops (folds the untangling could not remove), the basis forms are tried in turn
-  // (the forms are computed once; an attempt costs a fraction of them) and the first
-  // that keeps them is used.
+  // One attempt with the coefficients c: everything after the forms (computed once;
+  // an attempt costs a fraction of them). When the quads are faulty (folds the
+  // untangling could not remove, dropped cells, quad boundary off S's boundary, or
+  // not the input's topology), the same form is rounded again at nearby scales, and
+  // then, with --form auto, the basis forms are tried in turn (below).
   const QuadMeshResult preamble = r;
+  // `density`: the base lattice's quad count as a fraction of the target; with
+  // `choose_scale` the scale then moves within rounding_window to where the periods
+  // round best (and base_density says where it landed)
   auto attempt = [&](const Eigen::VectorXd& coefficients, TriangleSoup soup, std::vector<FaceMap> basis,
-                     double density = 1.0) {
+                     double density, bool choose_scale) {
     QuadMeshResult r = preamble;
     r.coefficients = coefficients;
     r.uniformity = uniformity_ratio(soup, basis, r.coefficients);
@@ -249,11 +296,14 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
     FaceMap target;
     r.expected_quads = options.quads > 0 ? static_cast<double>(options.quads)
                                          : area / (r.size_requested * r.size_requested);
-    r.base_density = density;
-    r.scale = std::sqrt(density * r.expected_quads / image_area_sum(h));
+    const double nominal = std::sqrt(r.expected_quads / image_area_sum(h));
+    r.scale = std::sqrt(density) * nominal;
     {
       // S as it is until the cone stars are refined
       const SurfaceAdjacency input = surface_adjacency(soup);
+      if (choose_scale)
+        r.scale = rounding_scale(rounded_periods(input, h, period_loops(soup)), r.scale, rounding_window);
+      r.base_density = (r.scale / nominal) * (r.scale / nominal);
       // at least 4 quad edges on every boundary loop, but not at any price: a form
       // almost 0 along a loop would be scaled up a thousandfold (a lattice of
       // millions of cells); beyond twice the scale the loop keeps fewer edges
@@ -284,13 +334,7 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
 
     stages.next("quantization", "quantizing (integer periods, boundary levels, zeros and corners on the lattice)");
     const SurfaceAdjacency adjacency = surface_adjacency(soup);
-    PeriodLoops loops;
-    {
-      const NamedLoops named = named_loops(to_surface_mesh(soup));
-      loops.boundaries = named.boundaries;
-      loops.bridges = named.bridges;
-      loops.handles = named.handles;
-    }
+    const PeriodLoops loops = period_loops(soup);
     r.quantization = quantize(soup, adjacency, target, basis, r.zero_vertices, loops);
     auto unsafe = [&] {
       return std::count_if(r.quantization.param.corners.begin(), r.quantization.param.corners.end(),
@@ -354,31 +398,65 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
     }
 
     r.surface = std::move(soup);
+    note_stray_boundary(r);
     return r;
   };
-  QuadMeshResult best = attempt(r.coefficients, soup, basis);
+  QuadMeshResult best = attempt(r.coefficients, soup, basis, 1.0, true);
   const bool automatic = options.coefficients.empty() && options.form < 0;
-  const std::pair<int, int> input_topology = automatic ? topology_of(soup) : std::pair<int, int>{};
-  if (automatic && topology_of(polygon_mesh(best.quads)) != input_topology) {
-    // the basis forms, most uniform first
+  const std::pair<int, int> input_topology = topology_of(soup);
+  // Folds the untangling could not remove (and the cells they drop) depend on how
+  // s h rounds: a scale a few percent off rounds every period and zero differently.
+  // The same form is tried at a few nearby scales, nearest first, and the least
+  // faulty result kept (shortcomings()); the first clean one ends the search.
+  auto faulty = [&](const QuadMeshResult& a) {
+    const ExtractionReport& x = a.extraction;
+    return a.quads.quads.empty() || x.bad_triangles + x.incomplete_cells + x.degenerate_cells > 0 ||
+           a.stray_boundary_points > 0 || topology_of(polygon_mesh(a.quads)) != input_topology;
+  };
+  if (faulty(best)) {
+    auto fault = shortcomings(best, input_topology);
+    // the requested size itself first, when the scale had moved off it
+    std::vector<double> densities;
+    if (std::abs(best.base_density - 1.0) > 0.01) densities.push_back(1.0);
+    for (const double factor : rounding_retry_densities) densities.push_back(best.base_density * factor);
+    for (const double density : densities) {
+      stages.next("rounding", fmt::format("folds, dropped cells or quads off the boundary left: rounding "
+                                          "again at {:.0f}% of the target quad count",
+                                          100 * density));
+      QuadMeshResult a = attempt(best.coefficients, soup, basis, density, false);
+      ++best.rounding_attempts;
+      a.rounding_attempts = best.rounding_attempts;
+      if (const auto f = shortcomings(a, input_topology); !a.quads.quads.empty() && f < fault) {
+        fault = f;
+        best = std::move(a);
+      }
+      if (!faulty(best)) break;
+    }
+  }
+  if (automatic && faulty(best)) {
+    // the basis forms, most uniform first; the least faulty result is kept, and the
+    // first sound one ends the search
     std::vector<std::pair<double, int>> order;
     for (int k = 0; k < G; ++k) order.push_back({uniformity_ratio(soup, basis, Eigen::VectorXd::Unit(G, k)), k});
     std::sort(order.begin(), order.end());
+    auto fault = shortcomings(best, input_topology);
     for (std::size_t i = 0; i < order.size(); ++i) {
       const int k = order[i].second;
-      stages.next("form_choice", fmt::format("the quads do not keep the input's topology: trying symmetric "
-                                             "basis form {} ({} of {})", k + 1, i + 1, G));
-      QuadMeshResult a = attempt(Eigen::VectorXd::Unit(G, k), soup, basis);
+      stages.next("form_choice", fmt::format("the quads do not cover the surface once with its boundary: trying "
+                                             "symmetric basis form {} ({} of {})", k + 1, i + 1, G));
+      QuadMeshResult a = attempt(Eigen::VectorXd::Unit(G, k), soup, basis, 1.0, true);
       a.form_attempts = static_cast<int>(i + 2);
+      a.rounding_attempts = best.rounding_attempts;
       best.form_attempts = a.form_attempts;
-      if (topology_of(polygon_mesh(a.quads)) == input_topology) {
+      if (const auto f = shortcomings(a, input_topology); !a.quads.quads.empty() && f < fault) {
+        fault = f;
         best = std::move(a);
-        break;
       }
+      if (!faulty(best)) break;
     }
   }
   if (options.max_deviation >= 0 && !best.quads.quads.empty()) refine_where_deviating(best, options, diagonal, stages, [&](double density) {
-    return attempt(best.coefficients, soup, basis, density);
+    return attempt(best.coefficients, soup, basis, density, true);
   });
   if (options.smoothing && !best.quads.quads.empty()) {
     stages.next("smoothing", "smoothing the worst quads");
@@ -394,21 +472,9 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
     best.fitting = fit_quads_to_surface(best.surface, best.quads, best.boundary_loop_of_point, fitting);
   }
   stages.close();
+  note_stray_boundary(best);
   best.timings = r.timings;
   return best;
-}
-
-/// What is wrong with a result, worst first (lexicographic; lower is better): the
-/// topology is not the input's, inverted quads, dropped cells, issue 4's shape
-/// criteria not met (min scaled Jacobian >= 0.3, mean angle deviation <= 5
-/// degrees), then the smallest scaled Jacobian (negated).
-std::tuple<int, std::size_t, std::size_t, int, double> shortcomings(const QuadMeshResult& r,
-                                                                    std::pair<int, int> input_topology) {
-  const QuadQuality q = quad_quality(polygon_mesh(r.quads), nullptr);
-  const bool topology = q.euler_characteristic == input_topology.first && q.boundary_loops == input_topology.second;
-  const int unmet = (q.min_scaled_jacobian < 0.3 ? 1 : 0) + (q.angle_dev_mean > 5.0 ? 1 : 0);
-  return {topology ? 0 : 1, q.inverted, r.extraction.incomplete_cells + r.extraction.degenerate_cells, unmet,
-          -q.min_scaled_jacobian};
 }
 
 }  // namespace

@@ -62,7 +62,8 @@ struct QuadMeshResult {
   bool remeshed = false;         ///< the input was remeshed first
   double input_hodge_star_squared = 0;  ///< ||Lambda^2 + I|| on the input triangulation
   Eigen::VectorXd coefficients;  ///< h = sum c_k h_k (unit vector), before rotation
-  int form_attempts = 1;         ///< forms tried (auto tries the basis forms when the topology breaks)
+  int form_attempts = 1;         ///< forms tried (auto tries the basis forms when the quads are faulty)
+  int rounding_attempts = 0;     ///< the form rounded again at other scales (folds or dropped cells left)
   double uniformity = 0;         ///< R(c) of form_choice.h (1 = uniform |h|)
   double scale = 0;              ///< s: the grid is the integer lattice of s h
   double size = 0;               ///< the target edge length that s implies
@@ -75,6 +76,10 @@ struct QuadMeshResult {
   UntangleReport untangle;       ///< the local repair of folds left by the quantization
   SnapReport branch_points;      ///< vertices the untangled map branched at, off the cones, moved onto the lattice
   ExtractionReport extraction;
+  /// Points on the quads' own boundary off every boundary of S (lattice_quads.h:
+  /// stray_boundary_points), of the final quads; 0 for a sound mesh.
+  std::size_t stray_boundary_points = 0;
+  Vec3 first_stray_point = Vec3::Zero();  ///< where the first one is (when any)
   double base_density = 1.0;     ///< the base lattice's quad count as a fraction of the target (< 1: coarsened)
   double max_deviation = 0.0;    ///< the tolerance used (0: refinement off)
   DeviationRefinementReport refinement;

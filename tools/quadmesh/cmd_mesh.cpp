@@ -95,6 +95,18 @@ void warn_if_cells_dropped(const QuadMeshResult& r) {
              dropped, where);
 }
 
+/// Quad boundary points off S's boundary: the quads leave part of S uncovered or
+/// cover part of it twice there, though the topology is the input's (so the mesh is
+/// written). One warning line on stderr, even with --quiet, naming the first.
+void warn_if_stray_boundary(const QuadMeshResult& r) {
+  if (r.stray_boundary_points == 0) return;
+  const Vec3& p = r.first_stray_point;
+  fmt::print(stderr,
+             "quadmesh: warning: {} points of the quads' boundary are not on the input's boundary, the first near "
+             "({:.6g}, {:.6g}, {:.6g}): the quads leave a gap or overlap there; try another --size or --form\n",
+             r.stray_boundary_points, p.x(), p.y(), p.z());
+}
+
 /// Inverted quads are written (the mesh is conforming) but a solver rejects them:
 /// one warning line on stderr, even with --quiet, naming the first.
 void warn_if_inverted(const MeshSummary& s, const QuadMeshResult& r) {
@@ -172,6 +184,7 @@ int run_mesh(const MeshOptions& options, const CommonOptions& common) {
   if (!options.report.empty()) write_report(options.report, summary);
   print_summary(summary);
   warn_if_cells_dropped(result);
+  warn_if_stray_boundary(result);
   warn_if_inverted(summary, result);
   warn_if_far(summary, result, bounding_box_diagonal(in.surface.soup.points, in.surface.soup.triangles));
   return exit_ok;

@@ -114,6 +114,7 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
                                                      result.coefficients.data() + result.coefficients.size())},
                {"rotate", options.rotate},
                {"attempts", result.form_attempts},
+               {"rounding_attempts", result.rounding_attempts},
                {"uniformity_ratio", result.uniformity},
                {"scale", result.scale},
                {"size_requested", result.size_requested},
@@ -150,6 +151,7 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
                      {"degenerate_cells", x.degenerate_cells},
                      {"bad_triangles", x.bad_triangles},
                      {"seam_mismatches", x.seam_mismatches},
+                     {"stray_boundary_points", result.stray_boundary_points},
                      {"chords_split", result.chords_split},
                      {"zero_star_splits", result.star_splits}};
   const DeviationRefinementReport& rf = result.refinement;
