@@ -408,11 +408,14 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
   // s h rounds: a scale a few percent off rounds every period and zero differently.
   // The same form is tried at a few nearby scales, nearest first, and the least
   // faulty result kept (shortcomings()); the first clean one ends the search.
-  auto faulty = [&](const QuadMeshResult& a) {
+  // broken: folds left, cells dropped or not the input's topology; faulty: that, or
+  // quad boundary points off S's boundary (a hole's arc cut short, say)
+  auto broken = [&](const QuadMeshResult& a) {
     const ExtractionReport& x = a.extraction;
     return a.quads.quads.empty() || x.bad_triangles + x.incomplete_cells + x.degenerate_cells > 0 ||
-           a.stray_boundary_points > 0 || topology_of(polygon_mesh(a.quads)) != input_topology;
+           topology_of(polygon_mesh(a.quads)) != input_topology;
   };
+  auto faulty = [&](const QuadMeshResult& a) { return broken(a) || a.stray_boundary_points > 0; };
   if (faulty(best)) {
     auto fault = shortcomings(best, input_topology);
     // the requested size itself first, when the scale had moved off it
@@ -433,16 +436,17 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
       if (!faulty(best)) break;
     }
   }
-  if (automatic && faulty(best)) {
+  if (automatic && broken(best)) {
     // the basis forms, most uniform first; the least faulty result is kept, and the
-    // first sound one ends the search
+    // first that is not broken ends the search (a basis form is far less uniform
+    // than auto's: it is not worth it for stray boundary points alone)
     std::vector<std::pair<double, int>> order;
     for (int k = 0; k < G; ++k) order.push_back({uniformity_ratio(soup, basis, Eigen::VectorXd::Unit(G, k)), k});
     std::sort(order.begin(), order.end());
     auto fault = shortcomings(best, input_topology);
     for (std::size_t i = 0; i < order.size(); ++i) {
       const int k = order[i].second;
-      stages.next("form_choice", fmt::format("the quads do not cover the surface once with its boundary: trying "
+      stages.next("form_choice", fmt::format("folds, dropped cells or the topology still wrong: trying "
                                              "symmetric basis form {} ({} of {})", k + 1, i + 1, G));
       QuadMeshResult a = attempt(Eigen::VectorXd::Unit(G, k), soup, basis, 1.0, true);
       a.form_attempts = static_cast<int>(i + 2);
@@ -452,7 +456,7 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
         fault = f;
         best = std::move(a);
       }
-      if (!faulty(best)) break;
+      if (!broken(best)) break;
     }
   }
   if (options.max_deviation >= 0 && !best.quads.quads.empty()) refine_where_deviating(best, options, diagonal, stages, [&](double density) {

@@ -198,7 +198,8 @@ TEST_CASE("a plate whose first rounding leaves folds is rounded again at a nearb
   // A 150 x 50 plate with five holes, two of them 6.6 apart: at the scale of 1.5%
   // the untangling left folds between them and 7 cells were dropped (a gap,
   // Hausdorff 3%). The same form rounded at a few percent more or fewer quads has
-  // none. (At 1.44% and 1.53% no rounding and no basis form is sound: test_cli.)
+  // none. (At 1.44% and 1.53% every rounding tried leaves quad boundary points off the
+  // plate's boundary: test_cli.)
   const std::string dir = test::scratch_dir("mesh_rounding_retry");
   const std::string path = test::write_text(
       dir, "five-holes.geo",

@@ -239,8 +239,8 @@ TEST_CASE("mesh: a coarse plate whose first rounding drops cells is rounded agai
 
 TEST_CASE("mesh: quads whose boundary strays from the input's are written with one warning line naming the first") {
   // a 150 x 50 plate with five holes at 1.44%: two boundary zeros on one hole and a
-  // narrow part beside it; every rounding and every basis form leaves quads that
-  // cover part of the plate twice, with the input's Euler characteristic
+  // narrow part beside it; every rounding tried leaves quads whose boundary cuts
+  // across the holes' arcs, with the input's Euler characteristic and loops
   const WrittenMesh m = mesh_geo(test::scratch_dir("cli_stray"),
       "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 150, 50};\n"
       "Disk(2) = {32.90, 18.35, 0, 4.56};\nDisk(3) = {62.03, 25.02, 0, 3.24};\n"
