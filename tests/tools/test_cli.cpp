@@ -286,11 +286,17 @@ TEST_CASE("mesh: an L-bracket with a long arm fails fast, naming the long end (a
 TEST_CASE("mesh: bad options are usage errors, before any work") {
   const std::string dir = test::scratch_dir("cli_mesh_options");
   const std::string input = test::example("annulus.geo");
-  for (const char* options : {"--size -1", "--size 1.5%%", "--form 0", "--form x", "--quads 0"}) {
+  for (const char* options : {"--size -1", "--size 1.5%%", "--form 0", "--form x", "--quads 0", "--bogus"}) {
     CAPTURE(options);
     const Run run = quadmesh("mesh " + quoted(input) + " -o " + quoted(dir + "/out.msh") + " " + std::string(options));
     CHECK(run.status == 2);
     CHECK_FALSE(std::filesystem::exists(dir + "/out.msh"));
+    // one line naming the option, like every other error
+    const auto lines = run.error_lines();
+    REQUIRE(lines.size() == 1);
+    CHECK(lines[0].rfind("quadmesh: error: ", 0) == 0);
+    const std::string option = std::string(options).substr(0, std::string(options).find(' '));
+    CHECK(lines[0].find(option) != std::string::npos);
   }
   const Run coeffs = quadmesh("mesh " + quoted(input) + " -o " + quoted(dir + "/out.msh") + " --coeffs 1,2");
   CHECK(coeffs.status == 3);

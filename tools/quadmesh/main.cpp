@@ -153,7 +153,8 @@ int run(int argc, char** argv) {
   } catch (const CLI::Success& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    app.exit(e);
+    // one line, like every other error (CLI11's own would add a second)
+    fmt::print(stderr, "quadmesh: error: {} (see quadmesh --help)\n", e.what());
     return exit_usage;
   }
   if (info_cmd->parsed()) return run_info(info, common);
