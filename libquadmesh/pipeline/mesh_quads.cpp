@@ -177,10 +177,8 @@ void refine_where_deviating(QuadMeshResult& best, const QuadMeshOptions& options
     // geometric fidelity is not bought with element shape: a coarser base is kept
     // only if its worst quad stays as good (or at least at the usual 0.3 floor)
     if (a.refinement.deviation_after < best.refinement.deviation_after &&
-        min_scaled_jacobian(a.quads) >= std::min(min_scaled_jacobian(best.quads), 0.3)) {
-      a.form_attempts = best.form_attempts;
+        min_scaled_jacobian(a.quads) >= std::min(min_scaled_jacobian(best.quads), 0.3))
       best = std::move(a);
-    }
   }
 }
 
@@ -278,6 +276,7 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
   // not the input's topology), the same form is rounded again at nearby scales, and
   // then, with --form auto, the basis forms are tried in turn (below).
   const QuadMeshResult preamble = r;
+  const PeriodLoops input_loops = period_loops(soup);  // of S before any cone star is refined
   // `density`: the base lattice's quad count as a fraction of the target; with
   // `choose_scale` the scale then moves within rounding_window to where the periods
   // round best (and base_density says where it landed)
@@ -302,7 +301,7 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
       // S as it is until the cone stars are refined
       const SurfaceAdjacency input = surface_adjacency(soup);
       if (choose_scale)
-        r.scale = rounding_scale(rounded_periods(input, h, period_loops(soup)), r.scale, rounding_window);
+        r.scale = rounding_scale(rounded_periods(input, h, input_loops), r.scale, rounding_window);
       r.base_density = (r.scale / nominal) * (r.scale / nominal);
       // at least 4 quad edges on every boundary loop, but not at any price: a form
       // almost 0 along a loop would be scaled up a thousandfold (a lattice of
@@ -416,8 +415,17 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
            topology_of(polygon_mesh(a.quads)) != input_topology;
   };
   auto faulty = [&](const QuadMeshResult& a) { return broken(a) || a.stray_boundary_points > 0; };
+  // the least faulty result so far is `best` (shortcomings())
+  auto fault = shortcomings(best, input_topology);
+  auto keep_if_less_faulty = [&](QuadMeshResult a) {
+    if (a.quads.quads.empty()) return;
+    if (const auto f = shortcomings(a, input_topology); f < fault) {
+      fault = f;
+      best = std::move(a);
+    }
+  };
+  int rounding_attempts = 0, form_attempts = 1;
   if (faulty(best)) {
-    auto fault = shortcomings(best, input_topology);
     // the requested size itself first, when the scale had moved off it
     std::vector<double> densities;
     if (std::abs(best.base_density - 1.0) > 0.01) densities.push_back(1.0);
@@ -426,36 +434,24 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
       stages.next("rounding", fmt::format("folds, dropped cells or quads off the boundary left: rounding "
                                           "again at {:.0f}% of the target quad count",
                                           100 * density));
-      QuadMeshResult a = attempt(best.coefficients, soup, basis, density, false);
-      ++best.rounding_attempts;
-      a.rounding_attempts = best.rounding_attempts;
-      if (const auto f = shortcomings(a, input_topology); !a.quads.quads.empty() && f < fault) {
-        fault = f;
-        best = std::move(a);
-      }
+      ++rounding_attempts;
+      keep_if_less_faulty(attempt(best.coefficients, soup, basis, density, false));
       if (!faulty(best)) break;
     }
   }
   if (automatic && broken(best)) {
-    // the basis forms, most uniform first; the least faulty result is kept, and the
-    // first that is not broken ends the search (a basis form is far less uniform
-    // than auto's: it is not worth it for stray boundary points alone)
+    // the basis forms, most uniform first; the first that is not broken ends the
+    // search (a basis form is far less uniform than auto's: it is not worth it for
+    // stray boundary points alone)
     std::vector<std::pair<double, int>> order;
     for (int k = 0; k < G; ++k) order.push_back({uniformity_ratio(soup, basis, Eigen::VectorXd::Unit(G, k)), k});
     std::sort(order.begin(), order.end());
-    auto fault = shortcomings(best, input_topology);
     for (std::size_t i = 0; i < order.size(); ++i) {
       const int k = order[i].second;
       stages.next("form_choice", fmt::format("folds, dropped cells or the topology still wrong: trying "
                                              "symmetric basis form {} ({} of {})", k + 1, i + 1, G));
-      QuadMeshResult a = attempt(Eigen::VectorXd::Unit(G, k), soup, basis, 1.0, true);
-      a.form_attempts = static_cast<int>(i + 2);
-      a.rounding_attempts = best.rounding_attempts;
-      best.form_attempts = a.form_attempts;
-      if (const auto f = shortcomings(a, input_topology); !a.quads.quads.empty() && f < fault) {
-        fault = f;
-        best = std::move(a);
-      }
+      ++form_attempts;
+      keep_if_less_faulty(attempt(Eigen::VectorXd::Unit(G, k), soup, basis, 1.0, true));
       if (!broken(best)) break;
     }
   }
@@ -477,6 +473,8 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
   }
   stages.close();
   note_stray_boundary(best);
+  best.rounding_attempts = rounding_attempts;
+  best.form_attempts = form_attempts;
   best.timings = r.timings;
   return best;
 }

@@ -62,8 +62,8 @@ struct QuadMeshResult {
   bool remeshed = false;         ///< the input was remeshed first
   double input_hodge_star_squared = 0;  ///< ||Lambda^2 + I|| on the input triangulation
   Eigen::VectorXd coefficients;  ///< h = sum c_k h_k (unit vector), before rotation
-  int form_attempts = 1;         ///< forms tried (auto tries the basis forms when the quads are faulty)
-  int rounding_attempts = 0;     ///< the form rounded again at other scales (folds or dropped cells left)
+  int form_attempts = 1;         ///< forms tried (auto tries the basis forms while folds, dropped cells or a wrong topology are left)
+  int rounding_attempts = 0;     ///< the form rounded again at other scales (the quads were faulty: mesh_quads.cpp)
   double uniformity = 0;         ///< R(c) of form_choice.h (1 = uniform |h|)
   double scale = 0;              ///< s: the grid is the integer lattice of s h
   double size = 0;               ///< the target edge length that s implies
