@@ -27,6 +27,14 @@ std::string write_text(const std::string& dir, const std::string& name, const st
   return path;
 }
 
+std::string five_hole_plate_geo() {
+  return "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 150, 50};\n"
+         "Disk(2) = {32.90, 18.35, 0, 4.56};\nDisk(3) = {62.03, 25.02, 0, 3.24};\n"
+         "Disk(4) = {11.41, 22.08, 0, 4.47};\nDisk(5) = {140.19, 14.53, 0, 4.62};\n"
+         "Disk(6) = {43.14, 28.38, 0, 3.18};\n"
+         "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:6}; Delete; }\n";
+}
+
 TriangleSoup annulus(double r0, double r1, int rings, int sectors) {
   TriangleSoup s;
   for (int i = 0; i <= rings; ++i)

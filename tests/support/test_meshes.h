@@ -16,6 +16,10 @@ std::string example(const std::string& name);
 std::string scratch_dir(const std::string& test_name);
 /// Writes `text` to dir/name (a .geo written by a test); returns the path.
 std::string write_text(const std::string& dir, const std::string& name, const std::string& text);
+/// A 150 x 50 CAD plate with five round holes, two of them 6.6 apart (OpenCASCADE
+/// .geo text): its first rounding at 1.5% left folds and dropped cells, and at
+/// 1.44% every rounding leaves quad boundary points off the plate's boundary.
+std::string five_hole_plate_geo();
 
 /// Planar annulus r0 <= |z| <= r1 with `rings` x `sectors` quads split in two
 /// (genus 0, 2 boundaries, chi 0).

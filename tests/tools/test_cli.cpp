@@ -241,13 +241,7 @@ TEST_CASE("mesh: quads whose boundary strays from the input's are written with o
   // a 150 x 50 plate with five holes at 1.44%: two boundary zeros on one hole and a
   // narrow part beside it; every rounding tried leaves quads whose boundary cuts
   // across the holes' arcs, with the input's Euler characteristic and loops
-  const WrittenMesh m = mesh_geo(test::scratch_dir("cli_stray"),
-      "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 150, 50};\n"
-      "Disk(2) = {32.90, 18.35, 0, 4.56};\nDisk(3) = {62.03, 25.02, 0, 3.24};\n"
-      "Disk(4) = {11.41, 22.08, 0, 4.47};\nDisk(5) = {140.19, 14.53, 0, 4.62};\n"
-      "Disk(6) = {43.14, 28.38, 0, 3.18};\n"
-      "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:6}; Delete; }\n",
-      "1.44%");
+  const WrittenMesh m = mesh_geo(test::scratch_dir("cli_stray"), test::five_hole_plate_geo(), "1.44%");
   const int stray = m.report["extraction"]["stray_boundary_points"].get<int>();
   CHECK(stray > 0);
   const auto lines = m.run.error_lines();
