@@ -22,8 +22,13 @@ namespace {
 
 double distance_to_integer(double x) { return std::abs(x - std::round(x)); }
 
-/// An input file as `quadmesh mesh` sees it: read, checked, oriented.
-TriangleSoup analysed(const std::string& path) { return analyze_topology(io::read_surface(path, {}).soup).soup; }
+/// An input file as `quadmesh mesh` sees it: read (CAD input triangulated for quads
+/// of `quad_size_relative` of the diagonal; 0: the reader's default), checked, oriented.
+TriangleSoup analysed(const std::string& path, double quad_size_relative = 0) {
+  io::ReadOptions read;
+  read.quad_size_relative = quad_size_relative;
+  return analyze_topology(io::read_surface(path, read).soup).soup;
+}
 
 /// Valence (number of quads) of every quad-mesh point.
 std::vector<int> quads_at(const LatticeQuads& q) {
@@ -179,10 +184,7 @@ TEST_CASE("CAD plates that had gaps: branch points off the lattice, overlapping 
   };
   for (const Plate& plate : plates) {
     CAPTURE(plate.name);
-    const std::string path = test::write_text(dir, std::string(plate.name) + ".geo", plate.geo);
-    io::ReadOptions read;
-    read.quad_size_relative = 0.015;
-    const TriangleSoup input = analyze_topology(io::read_surface(path, read).soup).soup;
+    const TriangleSoup input = analysed(test::write_text(dir, std::string(plate.name) + ".geo", plate.geo), 0.015);
     QuadMeshOptions options;
     options.size_relative = 0.015;
     const QuadMeshResult r = mesh_quads(input, options);
@@ -201,10 +203,7 @@ TEST_CASE("a plate whose first rounding leaves folds is rounded again at a nearb
   // none. (At 1.44% and 1.53% every rounding tried leaves quad boundary points off the
   // plate's boundary: test_cli.)
   const std::string dir = test::scratch_dir("mesh_rounding_retry");
-  const std::string path = test::write_text(dir, "five-holes.geo", test::five_hole_plate_geo());
-  io::ReadOptions read;
-  read.quad_size_relative = 0.015;
-  const TriangleSoup input = analyze_topology(io::read_surface(path, read).soup).soup;
+  const TriangleSoup input = analysed(test::write_text(dir, "five-holes.geo", test::five_hole_plate_geo()), 0.015);
   QuadMeshOptions options;
   options.size_relative = 0.015;
   const QuadMeshResult r = mesh_quads(input, options);
