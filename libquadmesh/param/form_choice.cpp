@@ -130,4 +130,19 @@ Eigen::VectorXd most_uniform_combination(const TriangleSoup& soup, const std::ve
   return best;
 }
 
+Eigen::VectorXd most_uniform_combination(const TriangleSoup& soup, const std::vector<FaceMap>& basis,
+                                         const Eigen::MatrixXd& constraints) {
+  if (constraints.rows() == 0) return most_uniform_combination(soup, basis);
+  QM_ASSERT(constraints.cols() == static_cast<Eigen::Index>(basis.size()));
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(constraints, Eigen::ComputeFullV);
+  svd.setThreshold(1e-6);  // rows are unit vectors: nearly equal ones count once
+  const Eigen::Index rank = svd.rank();
+  const Eigen::Index free = constraints.cols() - rank;
+  QM_ASSERT_MSG(free > 0, "most_uniform_combination: the constraints leave no form");
+  const Eigen::MatrixXd null_space = svd.matrixV().rightCols(free);
+  std::vector<FaceMap> reduced;
+  for (Eigen::Index i = 0; i < free; ++i) reduced.push_back(linear_combination(basis, null_space.col(i)));
+  return (null_space * most_uniform_combination(soup, reduced)).normalized();
+}
+
 }  // namespace qm

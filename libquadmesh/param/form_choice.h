@@ -21,4 +21,10 @@ double uniformity_ratio(const TriangleSoup& soup, const std::vector<FaceMap>& ba
 /// descent on the sphere from every basis vector, the best local minimum kept.
 Eigen::VectorXd most_uniform_combination(const TriangleSoup& soup, const std::vector<FaceMap>& basis);
 
+/// The same among the c with constraints * c = 0 (one row per linear condition,
+/// e.g. boundary_tips.h): the objective is minimized over an orthonormal basis of
+/// the constraints' null space. Precondition: that null space is not {0}.
+Eigen::VectorXd most_uniform_combination(const TriangleSoup& soup, const std::vector<FaceMap>& basis,
+                                         const Eigen::MatrixXd& constraints);
+
 }  // namespace qm

@@ -5,6 +5,7 @@
 #include "libquadmesh/forms/named_loops.h"
 #include "libquadmesh/forms/long_edges.h"
 #include "libquadmesh/forms/remesh.h"
+#include "libquadmesh/param/boundary_tips.h"
 #include "libquadmesh/param/form_choice.h"
 #include "libquadmesh/param/rounding_scale.h"
 #include "libquadmesh/param/surface_forms.h"
@@ -254,6 +255,7 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
   const int G = static_cast<int>(basis.size());
 
   stages.next("form_choice", "choosing the form");
+  Eigen::VectorXd free_coefficients;  // auto's form without the zeros at boundary tips, when it has some
   if (!options.coefficients.empty()) {
     if (static_cast<int>(options.coefficients.size()) != G)
       throw Error(ErrorCode::bad_input,
@@ -268,7 +270,11 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
                   fmt::format("--form {}: the surface has {} symmetric forms (0 to {})", options.form, G, G - 1));
     r.coefficients = Eigen::VectorXd::Unit(G, options.form);
   } else {
-    r.coefficients = most_uniform_combination(soup, basis);
+    const Eigen::MatrixXd tips =
+        tip_constraints(soup, surface_adjacency(soup), basis, options.tip_angle_deg * M_PI / 180.0);
+    r.boundary_tips = static_cast<std::size_t>(tips.rows());
+    r.coefficients = most_uniform_combination(soup, basis, tips);
+    if (tips.rows() > 0) free_coefficients = most_uniform_combination(soup, basis);
   }
   // One attempt with the coefficients c: everything after the forms (computed once;
   // an attempt costs a fraction of them). When the quads are faulty (folds the
@@ -425,6 +431,15 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
     }
   };
   int rounding_attempts = 0, form_attempts = 1;
+  if (free_coefficients.size() > 0) {
+    // zeros at the tips move the other zeros and change |h| everywhere: the most
+    // uniform form without them is meshed too, and the less faulty result kept
+    stages.next("form_choice", fmt::format("meshing the form without zeros at the {} boundary tips as well",
+                                           r.boundary_tips));
+    ++form_attempts;
+    keep_if_less_faulty(attempt(free_coefficients, soup, basis, 1.0, true));
+    if (best.coefficients == free_coefficients) best.boundary_tips = 0;
+  }
   if (faulty(best)) {
     // the requested size itself first, when the scale had moved off it
     std::vector<double> densities;

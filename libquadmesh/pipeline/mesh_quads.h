@@ -40,6 +40,11 @@ struct QuadMeshOptions {
   double size_relative = 0.0;  ///< target edge length as a fraction of the bounding-box diagonal
   std::size_t quads = 0;    ///< target quad count; wins over size when not 0
   double corner_angle_deg = 30.0;
+  /// With "auto": boundary vertices where the surface turns this much or more
+  /// (degrees; a slit's end, the sharp corner of a small hole) get a zero of h, so
+  /// that four quads share the turn rather than two (param/boundary_tips.h).
+  /// Above 360: none.
+  double tip_angle_deg = 315.0;
   /// Size adaptivity (extract/deviation_refinement.h): chords are split where the
   /// quads deviate from S by more than this distance. 0: half the target size;
   /// < 0: off. The quad count stays within 10% above the target: when the
@@ -62,6 +67,7 @@ struct QuadMeshResult {
   bool remeshed = false;         ///< the input was remeshed first
   double input_hodge_star_squared = 0;  ///< ||Lambda^2 + I|| on the input triangulation
   Eigen::VectorXd coefficients;  ///< h = sum c_k h_k (unit vector), before rotation
+  std::size_t boundary_tips = 0;  ///< boundary tips the auto form was asked to vanish at (tip_angle_deg)
   int form_attempts = 1;         ///< forms tried (auto tries the basis forms while folds, dropped cells or a wrong topology are left)
   int rounding_attempts = 0;     ///< the form rounded again at other scales (the quads were faulty: mesh_quads.cpp)
   double uniformity = 0;         ///< R(c) of form_choice.h (1 = uniform |h|)

@@ -169,6 +169,7 @@ int run_mesh(const MeshOptions& options, const CommonOptions& common) {
   mesher.size_relative = options.size_relative;
   mesher.quads = options.quads;
   mesher.corner_angle_deg = options.corner_angle_deg;
+  mesher.tip_angle_deg = options.tip_angle_deg;
   mesher.max_deviation = options.max_deviation;
   mesher.max_deviation_relative = options.max_deviation_relative;
   const QuadMeshResult result =

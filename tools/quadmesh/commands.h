@@ -30,6 +30,7 @@ struct MeshOptions {
   bool rotate = false;
   bool no_smoothing = false;            ///< --no-smoothing
   double corner_angle_deg = 30.0;
+  double tip_angle_deg = 315.0;
   double max_deviation = 0.0;           ///< --max-deviation D; 0: half the size; < 0: off
   double max_deviation_relative = 0.0;  ///< --max-deviation P%: P/100 of the diagonal
   double msh_version = 4.1;

@@ -106,6 +106,10 @@ int run(int argc, char** argv) {
   mesh_cmd->add_option("--corner-angle", mesh.corner_angle_deg,
                        "Boundary turning angle (degrees) above which a vertex is a corner put on the grid")
       ->check(CLI::Range(0.0, 180.0));
+  mesh_cmd->add_option("--tip-angle", mesh.tip_angle_deg,
+                       "With --form auto: boundary vertices where the surface turns this much or more "
+                       "(degrees) get a zero of h, so four quads share the turn rather than two; above 360: none")
+      ->check(CLI::Range(180.0, 720.0));
   std::string deviation_text;
   mesh_cmd->add_option("--max-deviation", deviation_text,
                        "Split quad strips where the quads are farther than D (or P% of the diagonal) from "

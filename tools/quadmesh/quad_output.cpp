@@ -115,6 +115,7 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
                {"rotate", options.rotate},
                {"attempts", result.form_attempts},
                {"rounding_attempts", result.rounding_attempts},
+               {"boundary_tips", result.boundary_tips},
                {"uniformity_ratio", result.uniformity},
                {"scale", result.scale},
                {"size_requested", result.size_requested},

@@ -1,0 +1,82 @@
+#include "libquadmesh/param/boundary_tips.h"
+
+#include "libquadmesh/core/error.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace qm {
+
+std::vector<BoundaryTip> boundary_tips(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                       double min_angle) {
+  std::vector<BoundaryTip> tips;
+  for (std::size_t v = 0; v < soup.points.size(); ++v) {
+    if (!adjacency.boundary_vertex[v] || adjacency.vertex_faces[v].empty()) continue;
+    const VertexRing ring = vertex_ring(soup, adjacency, static_cast<int>(v));
+    const std::vector<double> angles = ring_angles(soup, ring, static_cast<int>(v));
+    const double angle = std::accumulate(angles.begin(), angles.end(), 0.0);
+    if (angle >= min_angle) tips.push_back({static_cast<int>(v), angle});
+  }
+  std::stable_sort(tips.begin(), tips.end(),
+                   [](const BoundaryTip& a, const BoundaryTip& b) { return a.angle > b.angle; });
+  return tips;
+}
+
+Eigen::RowVectorXd tip_leading_coefficient(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                           const std::vector<FaceMap>& basis, int tip) {
+  const VertexRing ring = vertex_ring(soup, adjacency, tip);
+  QM_ASSERT_MSG(ring.boundary, "tip_leading_coefficient: not a boundary vertex");
+  const std::vector<double> angles = ring_angles(soup, ring, tip);
+  const double theta = std::accumulate(angles.begin(), angles.end(), 0.0);
+  QM_ASSERT(theta > 0);
+  const double exponent = M_PI / theta;  // z = w^exponent
+  // the flattened ring: neighbour j at polar angle phi_j, distance r_j
+  const std::size_t J = ring.neighbours.size();
+  constexpr int terms = 3;
+  // rows 2j, 2j+1: Re and Im of  sum_n f_n z_j^(n+1) / (n+1) = value of the form on p -> n_j
+  Eigen::MatrixXd A(2 * J, terms);
+  std::vector<double> weight(J);
+  double phi = 0;
+  for (std::size_t j = 0; j < J; ++j) {
+    const Vec3 e = soup.points[static_cast<std::size_t>(ring.neighbours[j])] - soup.points[static_cast<std::size_t>(tip)];
+    const double rz = std::pow(e.norm(), exponent);  // |z_j|
+    weight[j] = rz > 0 ? 1.0 / rz : 0.0;
+    for (int n = 0; n < terms; ++n) {
+      const Complex zn = std::polar(std::pow(rz, n + 1), (n + 1) * exponent * phi) / double(n + 1);
+      A(2 * j, n) = weight[j] * zn.real();
+      A(2 * j + 1, n) = weight[j] * zn.imag();
+    }
+    if (j < angles.size()) phi += angles[j];
+  }
+  // f = P b with P the least-squares solve; f_0 is the first row of P
+  const Eigen::MatrixXd P = A.completeOrthogonalDecomposition().pseudoInverse();
+  Eigen::RowVectorXd row(static_cast<Eigen::Index>(basis.size()));
+  for (std::size_t k = 0; k < basis.size(); ++k) {
+    Eigen::VectorXd b(2 * J);
+    for (std::size_t j = 0; j < J; ++j) {
+      const Complex d = weight[j] * edge_value(adjacency, basis[k], tip, ring.neighbours[j]);
+      b[2 * j] = d.real();
+      b[2 * j + 1] = d.imag();
+    }
+    row[static_cast<Eigen::Index>(k)] = P.row(0).dot(b);
+  }
+  return row;
+}
+
+Eigen::MatrixXd tip_constraints(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                const std::vector<FaceMap>& basis, double min_angle) {
+  const std::vector<BoundaryTip> tips = boundary_tips(soup, adjacency, min_angle);
+  const std::size_t m = std::min(tips.size(), basis.empty() ? 0 : basis.size() - 1);
+  Eigen::MatrixXd rows(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(basis.size()));
+  for (std::size_t i = 0; i < m; ++i) {
+    Eigen::RowVectorXd r = tip_leading_coefficient(soup, adjacency, basis, tips[i].vertex);
+    if (r.norm() > 0) r.normalize();
+    rows.row(static_cast<Eigen::Index>(i)) = r;
+  }
+  return rows;
+}
+
+}  // namespace qm
