@@ -280,7 +280,7 @@ TEST_CASE("mesh: an L-bracket with a long arm fails fast, naming the long end (a
 TEST_CASE("mesh: bad options are usage errors, before any work") {
   const std::string dir = test::scratch_dir("cli_mesh_options");
   const std::string input = test::example("annulus.geo");
-  for (const char* options : {"--size -1", "--size 1.5%%", "--form 0", "--form x", "--quads 0", "--bogus"}) {
+  for (const char* options : {"--size -1", "--size 1.5%%", "--form 0", "--form x", "--quads 0", "--tip-angle 90", "--bogus"}) {
     CAPTURE(options);
     const Run run = quadmesh("mesh " + quoted(input) + " -o " + quoted(dir + "/out.msh") + " " + std::string(options));
     CHECK(run.status == 2);
