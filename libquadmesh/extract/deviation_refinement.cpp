@@ -15,21 +15,6 @@ namespace qm {
 
 namespace {
 
-std::vector<double> deviation(const TriangleTree& surface, const std::vector<Vec3>& surface_samples,
-                              const LatticeQuads& q) {
-  std::vector<double> out(q.quads.size(), 0.0);
-  if (q.quads.empty()) return out;
-  const TriangleTree quads = quad_triangle_tree(q);
-  if (quads.empty()) return out;
-  for (const Vec3& s : surface_samples) {
-    const auto [p, k] = quads.closest(s);
-    double& d = out[static_cast<std::size_t>(k)];
-    d = std::max(d, (p - s).norm());
-  }
-  for (std::size_t k = 0; k < q.quads.size(); ++k) out[k] = std::max(out[k], quad_to_surface(surface, quad_corners(q, k)));
-  return out;
-}
-
 /// Places new points on S: boundary midpoints on S's boundary, the others on S.
 class Placement {
  public:
@@ -122,8 +107,23 @@ std::array<Vec3, 7> quad_deviation_samples(const std::array<Vec3, 4>& p) {
           (p[1] + p[2]) / 2, (p[2] + p[3]) / 2, (p[3] + p[0]) / 2};
 }
 
+std::vector<double> quad_deviation(const TriangleTree& surface, const std::vector<Vec3>& surface_samples,
+                                   const LatticeQuads& q) {
+  std::vector<double> out(q.quads.size(), 0.0);
+  if (q.quads.empty()) return out;
+  const TriangleTree quads = quad_triangle_tree(q);
+  if (quads.empty()) return out;
+  for (const Vec3& s : surface_samples) {
+    const auto [p, k] = quads.closest(s);
+    double& d = out[static_cast<std::size_t>(k)];
+    d = std::max(d, (p - s).norm());
+  }
+  for (std::size_t k = 0; k < q.quads.size(); ++k) out[k] = std::max(out[k], quad_to_surface(surface, quad_corners(q, k)));
+  return out;
+}
+
 std::vector<double> quad_deviation(const TriangleSoup& surface, const LatticeQuads& quads) {
-  return deviation(TriangleTree(surface.points, surface.triangles), surface_samples(surface.points, surface.triangles, {2}), quads);
+  return quad_deviation(TriangleTree(surface.points, surface.triangles), surface_samples(surface.points, surface.triangles, {2}), quads);
 }
 
 namespace {
@@ -189,7 +189,7 @@ std::size_t split_round(const Placement& placement, const TriangleTree& index, c
     boundary_loop_of_point.push_back(on_boundary ? loop : -1);
   }
   quads.quads = std::move(out.quads);
-  dev = deviation(index, samples, quads);
+  dev = quad_deviation(index, samples, quads);
   return chosen;
 }
 
@@ -205,7 +205,7 @@ DeviationRefinementReport refine_to_deviation(const TriangleSoup& surface,
   const TriangleTree index(surface.points, surface.triangles);
   const std::vector<Vec3> samples = surface_samples(surface.points, surface.triangles, {2});
   const Placement placement(surface, adjacency, index);
-  std::vector<double> dev = deviation(index, samples, quads);
+  std::vector<double> dev = quad_deviation(index, samples, quads);
   report.deviation_before = max_of(dev);
   const std::size_t start = quads.quads.size();
   // a new point is placed on S by closest point; on a thin or sharply curved part

@@ -61,6 +61,11 @@ double quad_to_surface(const TriangleTree& surface, const std::array<Vec3, 4>& c
 /// it is to that quad.
 std::vector<double> quad_deviation(const TriangleSoup& surface, const LatticeQuads& quads);
 
+/// The same with the tree on S's triangles and the samples of S given (the
+/// vertices alone make a cheaper estimate of S's side).
+std::vector<double> quad_deviation(const TriangleTree& surface, const std::vector<Vec3>& surface_samples,
+                                   const LatticeQuads& quads);
+
 /// Splits chords until every quad's deviation is within options.tolerance, the
 /// budget is spent, or a round brings nothing; then up to options.min_quads. `boundary_loop_of_point` (per quad
 /// point, the boundary loop or -1) is extended for the new points; the new points'

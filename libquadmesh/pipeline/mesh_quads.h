@@ -6,6 +6,7 @@
 #include "libquadmesh/extract/deviation_refinement.h"
 #include "libquadmesh/extract/lattice_quads.h"
 #include "libquadmesh/extract/quad_fitting.h"
+#include "libquadmesh/extract/quad_angle_smoothing.h"
 #include "libquadmesh/extract/quad_smoothing.h"
 #include "libquadmesh/forms/symmetric_forms.h"
 #include "libquadmesh/param/branch_points.h"
@@ -51,7 +52,8 @@ struct QuadMeshOptions {
   /// refinement needs more, the base lattice is made coarser to pay for it.
   double max_deviation = 0.0;
   double max_deviation_relative = 0.0;  ///< the same as a fraction of the bounding-box diagonal (wins when > 0)
-  /// Move the regular interior corners of the worst quads (extract/quad_smoothing.h).
+  /// Move the regular interior corners of the worst quads (extract/quad_smoothing.h),
+  /// then every regular interior corner towards right angles (extract/quad_angle_smoothing.h).
   bool smoothing = true;
   /// Where triangles wider than the quads cover 5% of the area, also mesh the input
   /// split by longest-edge bisection and keep the better result (forms/long_edges.h).
@@ -90,6 +92,7 @@ struct QuadMeshResult {
   double max_deviation = 0.0;    ///< the tolerance used (0: refinement off)
   DeviationRefinementReport refinement;
   QuadSmoothingReport smoothing;  ///< the worst quads' interior points moved on S
+  QuadAngleSmoothingReport angle_smoothing;  ///< then every regular interior point, towards right angles
   QuadFittingReport fitting;      ///< corners moved onto S where the quads cut across it (max_deviation > 0)
   std::vector<std::pair<std::string, double>> timings;  ///< seconds per stage
   /// Edges of the input longer than the target size, split (forms/long_edges.h);

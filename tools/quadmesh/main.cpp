@@ -102,7 +102,8 @@ int run(int argc, char** argv) {
       ->excludes("--form");
   mesh_cmd->add_flag("--rotate", mesh.rotate, "Use i*h: the same grid turned by 90 degrees");
   mesh_cmd->add_flag("--no-smoothing", mesh.no_smoothing,
-                     "Keep every quad corner where the extraction put it (no smoothing of the worst quads)");
+                     "Keep every quad corner where the extraction put it (no smoothing of the worst quads "
+                     "or of the angles)");
   mesh_cmd->add_option("--corner-angle", mesh.corner_angle_deg,
                        "Boundary turning angle (degrees) above which a vertex is a corner put on the grid")
       ->check(CLI::Range(0.0, 180.0));

@@ -159,6 +159,9 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
   j["smoothing"] = {{"moved_points", result.smoothing.moved_points},
                     {"min_scaled_jacobian_before", result.smoothing.min_before},
                     {"min_scaled_jacobian_after", result.smoothing.min_after}};
+  j["angle_smoothing"] = {{"moved_points", result.angle_smoothing.moved_points},
+                          {"angle_dev_mean_before", result.angle_smoothing.angle_dev_before},
+                          {"angle_dev_mean_after", result.angle_smoothing.angle_dev_after}};
   j["fitting"] = {{"moved_points", result.fitting.moved_points},
                   {"deviation_before", result.fitting.deviation_before},
                   {"deviation_after", result.fitting.deviation_after}};

@@ -1,0 +1,82 @@
+// Angle smoothing (extract/quad_angle_smoothing.h) on a planar grid whose best
+// positions are known: the square grid, every corner at 90 degrees.
+#include "libquadmesh/extract/quad_angle_smoothing.h"
+#include "libquadmesh/quality/quad_quality.h"
+#include "tests/support/grid_quads.h"
+#include "tests/support/test_meshes.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+using namespace qm;
+
+namespace {
+
+constexpr int n = 8;
+
+/// The unit square's n x n grid with every interior point pushed off its place by
+/// up to a fifth of a cell (deterministic).
+LatticeQuads jittered_grid() {
+  LatticeQuads q = test::grid_quads(test::grid(n), n);
+  const std::vector<int> loops = test::unit_square_boundary(q);
+  for (std::size_t v = 0; v < q.points.size(); ++v)
+    if (loops[v] < 0)
+      q.points[v] += Vec3(0.2 / n * std::sin(7.0 * static_cast<double>(v)),
+                          0.2 / n * std::cos(5.0 * static_cast<double>(v)), 0.0);
+  return q;
+}
+
+double mean_angle_deviation(const LatticeQuads& q) { return quad_quality(polygon_mesh(q), nullptr).angle_dev_mean; }
+
+}  // namespace
+
+TEST_CASE("angle smoothing takes a jittered grid back to right angles, boundary and fixed points kept") {
+  const TriangleSoup surface = test::grid(n);
+  LatticeQuads q = jittered_grid();
+  const LatticeQuads jittered = q;
+  const std::vector<int> loops = test::unit_square_boundary(q);
+  const double before = mean_angle_deviation(q);
+  REQUIRE(before > 5.0);
+  // one interior point is held where it is
+  std::vector<char> fixed(q.points.size(), 0);
+  const std::size_t held = 3 * (n + 1) + 4;
+  REQUIRE(loops[held] < 0);
+  fixed[held] = 1;
+  QuadAngleSmoothingOptions options;
+  options.rounds = 60;
+  const QuadAngleSmoothingReport report = smooth_quad_angles(surface, q, loops, fixed, options);
+  CHECK(report.angle_dev_before == doctest::Approx(before));
+  CHECK(report.angle_dev_after == doctest::Approx(mean_angle_deviation(q)));
+  // the held point's own jitter is all that is left, spread over its neighbours
+  CHECK(report.angle_dev_after < 0.25 * before);
+  CHECK(report.moved_points == static_cast<std::size_t>((n - 1) * (n - 1) - 1));
+  CHECK(q.points[held] == jittered.points[held]);
+  for (std::size_t v = 0; v < q.points.size(); ++v) {
+    CHECK(q.points[v].z() == doctest::Approx(0.0));
+    if (loops[v] >= 0) CHECK(q.points[v] == jittered.points[v]);
+  }
+  // with nothing held, every point goes home
+  LatticeQuads free = jittered;
+  options.rounds = 200;
+  const QuadAngleSmoothingReport all = smooth_quad_angles(surface, free, loops, {}, options);
+  CHECK(all.angle_dev_after < 0.02 * before);
+  CHECK(test::min_scaled_jacobian(free) > 0.99);
+}
+
+TEST_CASE("angle smoothing leaves right angles alone and stays within max_move") {
+  const TriangleSoup surface = test::grid(n);
+  LatticeQuads square = test::grid_quads(surface, n);
+  const LatticeQuads untouched = square;
+  const QuadAngleSmoothingReport none = smooth_quad_angles(surface, square, test::unit_square_boundary(square), {});
+  CHECK(none.moved_points == 0);
+  CHECK(square.points == untouched.points);
+
+  LatticeQuads q = jittered_grid();
+  const LatticeQuads jittered = q;
+  QuadAngleSmoothingOptions options;
+  options.max_move = 0.005;
+  const QuadAngleSmoothingReport report = smooth_quad_angles(surface, q, test::unit_square_boundary(q), {}, options);
+  CHECK(report.angle_dev_after < report.angle_dev_before);
+  for (std::size_t v = 0; v < q.points.size(); ++v) CHECK((q.points[v] - jittered.points[v]).norm() <= 0.005 + 1e-12);
+}
