@@ -89,8 +89,8 @@ QuadAngleSmoothingReport smooth_quad_angles(const TriangleSoup& surface, Lattice
   std::vector<char> moved(nP, 0);
   for (int round = 0; round < options.rounds; ++round) {
     const std::vector<Vec3> normals = vertex_normals(polygon_mesh(quads));
-    // the corners of the quads around v with v at p: the sum of their squared angle
-    // deviations (degrees^2) and their smallest scaled Jacobian
+    // the corners of the quads around v with v at p: the sum of their angle
+    // deviations (degrees) and their smallest scaled Jacobian
     auto local = [&](int v, const Vec3& p) {
       double sum = 0, worst = std::numeric_limits<double>::infinity();
       for (int q : quads_at[static_cast<std::size_t>(v)]) {
@@ -101,7 +101,7 @@ QuadAngleSmoothingReport smooth_quad_angles(const TriangleSoup& surface, Lattice
         };
         for (int k = 0; k < 4; ++k) {
           const double d = corner_angle_deg(at(k - 1), at(k), at(k + 1)) - 90.0;
-          sum += d * d;
+          sum += std::abs(d);
           worst = std::min(worst, corner_scaled_jacobian(at(k - 1), at(k), at(k + 1),
                                                          normals[static_cast<std::size_t>(quad[static_cast<std::size_t>(k)])]));
         }

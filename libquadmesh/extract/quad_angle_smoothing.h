@@ -7,8 +7,9 @@
 // straight chords between lattice points, lose their right angles although the
 // grid's lines still cross at right angles. Moving each regular interior point
 // (valence 4, off the boundary; the singular vertices and every boundary point
-// stay) to lower the sum of squared deviations |angle - 90| of the corners of its
-// four quads, in the manner of angle-based smoothing [Zhou & Shimada 2000], takes
+// stay) to lower the sum of the deviations |angle - 90| of the corners of its four
+// quads (the measure issue 4 bounds; squared deviations lower the spread but can
+// raise the mean), in the manner of angle-based smoothing [Zhou & Shimada 2000], takes
 // most of that back without touching the grid's structure.
 // Each move is a step down the numerical gradient in the tangent plane, put back
 // on S by closest point, and kept only if the sum went down and the smallest scaled

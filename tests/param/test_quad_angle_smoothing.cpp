@@ -60,7 +60,7 @@ TEST_CASE("angle smoothing takes a jittered grid back to right angles, boundary 
   LatticeQuads free = jittered;
   options.rounds = 200;
   const QuadAngleSmoothingReport all = smooth_quad_angles(surface, free, loops, {}, options);
-  CHECK(all.angle_dev_after < 0.02 * before);
+  CHECK(all.angle_dev_after < 0.04 * before);
   CHECK(test::min_scaled_jacobian(free) > 0.99);
 }
 
