@@ -1,6 +1,7 @@
 #include "libquadmesh/param/boundary_tips.h"
 
 #include "libquadmesh/core/error.h"
+#include "libquadmesh/param/form_choice.h"
 
 #include <Eigen/Dense>
 
@@ -13,12 +14,16 @@ namespace qm {
 std::vector<BoundaryTip> boundary_tips(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                                        double min_angle) {
   std::vector<BoundaryTip> tips;
-  for (std::size_t v = 0; v < soup.points.size(); ++v) {
-    if (!adjacency.boundary_vertex[v] || adjacency.vertex_faces[v].empty()) continue;
-    const VertexRing ring = vertex_ring(soup, adjacency, static_cast<int>(v));
-    const std::vector<double> angles = ring_angles(soup, ring, static_cast<int>(v));
-    const double angle = std::accumulate(angles.begin(), angles.end(), 0.0);
-    if (angle >= min_angle) tips.push_back({static_cast<int>(v), angle});
+  for (const auto& loop : adjacency.boundary_loops) {
+    BoundaryTip widest;
+    for (int v : loop) {
+      if (adjacency.vertex_faces[static_cast<std::size_t>(v)].empty()) continue;
+      const VertexRing ring = vertex_ring(soup, adjacency, v);
+      const std::vector<double> angles = ring_angles(soup, ring, v);
+      const double angle = std::accumulate(angles.begin(), angles.end(), 0.0);
+      if (angle >= min_angle && angle > widest.angle) widest = {v, angle};
+    }
+    if (widest.vertex >= 0) tips.push_back(widest);
   }
   std::stable_sort(tips.begin(), tips.end(),
                    [](const BoundaryTip& a, const BoundaryTip& b) { return a.angle > b.angle; });
@@ -66,17 +71,27 @@ Eigen::RowVectorXd tip_leading_coefficient(const TriangleSoup& soup, const Surfa
   return row;
 }
 
-Eigen::MatrixXd tip_constraints(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
-                                const std::vector<FaceMap>& basis, double min_angle) {
-  const std::vector<BoundaryTip> tips = boundary_tips(soup, adjacency, min_angle);
-  const std::size_t m = std::min(tips.size(), basis.empty() ? 0 : basis.size() - 1);
-  Eigen::MatrixXd rows(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(basis.size()));
-  for (std::size_t i = 0; i < m; ++i) {
-    Eigen::RowVectorXd r = tip_leading_coefficient(soup, adjacency, basis, tips[i].vertex);
-    if (r.norm() > 0) r.normalize();
-    rows.row(static_cast<Eigen::Index>(i)) = r;
+TipChoice most_uniform_with_tips(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                 const std::vector<FaceMap>& basis, double min_angle, double max_ratio) {
+  TipChoice choice;
+  choice.free_coefficients = most_uniform_combination(soup, basis);
+  choice.coefficients = choice.free_coefficients;
+  if (basis.size() < 2) return choice;
+  const double limit = max_ratio * uniformity_ratio(soup, basis, choice.free_coefficients);
+  Eigen::MatrixXd rows(0, static_cast<Eigen::Index>(basis.size()));
+  for (const BoundaryTip& tip : boundary_tips(soup, adjacency, min_angle)) {
+    if (choice.tips.size() + 1 >= basis.size()) break;
+    Eigen::RowVectorXd row = tip_leading_coefficient(soup, adjacency, basis, tip.vertex);
+    if (!(row.norm() > 0)) continue;
+    Eigen::MatrixXd trial(rows.rows() + 1, rows.cols());
+    trial << rows, row.normalized();
+    const Eigen::VectorXd c = most_uniform_combination(soup, basis, trial);
+    if (!(uniformity_ratio(soup, basis, c) <= limit)) continue;
+    rows = trial;
+    choice.coefficients = c;
+    choice.tips.push_back(tip);
   }
-  return rows;
+  return choice;
 }
 
 }  // namespace qm

@@ -29,8 +29,9 @@ struct BoundaryTip {
   double angle = 0;  ///< the 3D angle of the surface at the vertex (radians)
 };
 
-/// The boundary vertices whose 3D angle is at least `min_angle` (radians), the
-/// widest first.
+/// The boundary vertices whose 3D angle is at least `min_angle` (radians), at most
+/// one per boundary loop (the widest on it: the parity of the sign changes of dU
+/// along a loop puts a second zero on the same loop anyway), the widest first.
 std::vector<BoundaryTip> boundary_tips(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                                        double min_angle);
 
@@ -43,9 +44,19 @@ std::vector<BoundaryTip> boundary_tips(const TriangleSoup& soup, const SurfaceAd
 Eigen::RowVectorXd tip_leading_coefficient(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                                            const std::vector<FaceMap>& basis, int tip);
 
-/// The constraint rows of the widest tips with at least `min_angle`, at most
-/// `basis.size() - 1` of them (one direction of c must stay free), normalized.
-Eigen::MatrixXd tip_constraints(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
-                                const std::vector<FaceMap>& basis, double min_angle);
+struct TipChoice {
+  Eigen::VectorXd coefficients;       ///< auto's form with a zero at each kept tip (unit vector)
+  Eigen::VectorXd free_coefficients;  ///< auto's form without them (form_choice.h)
+  std::vector<BoundaryTip> tips;      ///< the tips kept
+};
+
+/// Auto's form with zeros at the boundary tips (boundary_tips() with
+/// `min_angle`), added widest first and each kept only while the uniformity ratio
+/// (form_choice.h) stays within `max_ratio` times that of the form without tips:
+/// on a scan with many small sliver holes every tip would take one of the G
+/// directions of the forms, and the form left can be far from uniform (20 against
+/// 4.7 with six tips). At most G - 1 tips.
+TipChoice most_uniform_with_tips(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                 const std::vector<FaceMap>& basis, double min_angle, double max_ratio = 1.5);
 
 }  // namespace qm

@@ -270,11 +270,11 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
                   fmt::format("--form {}: the surface has {} symmetric forms (0 to {})", options.form, G, G - 1));
     r.coefficients = Eigen::VectorXd::Unit(G, options.form);
   } else {
-    const Eigen::MatrixXd tips =
-        tip_constraints(soup, surface_adjacency(soup), basis, options.tip_angle_deg * M_PI / 180.0);
-    r.boundary_tips = static_cast<std::size_t>(tips.rows());
-    r.coefficients = most_uniform_combination(soup, basis, tips);
-    if (tips.rows() > 0) free_coefficients = most_uniform_combination(soup, basis);
+    const TipChoice choice =
+        most_uniform_with_tips(soup, surface_adjacency(soup), basis, options.tip_angle_deg * M_PI / 180.0);
+    r.boundary_tips = choice.tips.size();
+    r.coefficients = choice.coefficients;
+    if (!choice.tips.empty()) free_coefficients = choice.free_coefficients;
   }
   // One attempt with the coefficients c: everything after the forms (computed once;
   // an attempt costs a fraction of them). When the quads are faulty (folds the
@@ -431,9 +431,12 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
     }
   };
   int rounding_attempts = 0, form_attempts = 1;
-  if (free_coefficients.size() > 0) {
-    // zeros at the tips move the other zeros and change |h| everywhere: the most
-    // uniform form without them is meshed too, and the less faulty result kept
+  const bool sound_and_shapely =
+      std::get<0>(fault) == 0 && std::get<1>(fault) == 0 && std::get<2>(fault) == 0 && std::get<3>(fault) == 0;
+  if (free_coefficients.size() > 0 && !sound_and_shapely) {
+    // zeros at the tips move the other zeros and change |h| everywhere: unless the
+    // quads are sound and meet the shape criteria, the most uniform form without
+    // them is meshed too, and the less faulty result kept
     stages.next("form_choice", fmt::format("meshing the form without zeros at the {} boundary tips as well",
                                            r.boundary_tips));
     ++form_attempts;
