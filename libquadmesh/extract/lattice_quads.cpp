@@ -337,6 +337,13 @@ std::array<Vec3, 4> quad_corners(const LatticeQuads& quads, std::size_t k) {
           quads.points[static_cast<std::size_t>(q[2])], quads.points[static_cast<std::size_t>(q[3])]};
 }
 
+std::array<Vec3, 4> quad_corners(const LatticeQuads& quads, std::size_t k, int v, const Vec3& p) {
+  std::array<Vec3, 4> c = quad_corners(quads, k);
+  for (std::size_t i = 0; i < 4; ++i)
+    if (quads.quads[k][i] == v) c[i] = p;
+  return c;
+}
+
 std::vector<int> stray_boundary_points(const LatticeQuads& quads, const std::vector<int>& boundary_loop_of_point) {
   QM_ASSERT(boundary_loop_of_point.size() == quads.points.size());
   std::map<std::pair<int, int>, int> uses;

@@ -55,6 +55,9 @@ PolygonMesh polygon_mesh(const LatticeQuads& quads);
 /// The corner points of quad k, in order.
 std::array<Vec3, 4> quad_corners(const LatticeQuads& quads, std::size_t k);
 
+/// The same with point v at p instead (a trial move of v).
+std::array<Vec3, 4> quad_corners(const LatticeQuads& quads, std::size_t k, int v, const Vec3& p);
+
 /// The points on the quads' own boundary (an edge of one quad only) that do not lie
 /// on a boundary of S (`boundary_loop_of_point[v] < 0`): a boundary-aligned mesh has
 /// none; one that has some leaves part of S uncovered or covers part twice, even

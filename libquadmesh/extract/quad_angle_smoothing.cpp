@@ -3,6 +3,7 @@
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/extract/closest_location.h"
 #include "libquadmesh/extract/deviation_refinement.h"
+#include "libquadmesh/extract/quad_smoothing.h"
 #include "libquadmesh/quality/quad_quality.h"
 #include "libquadmesh/quality/triangle_tree.h"
 
@@ -70,43 +71,28 @@ QuadAngleSmoothingReport smooth_quad_angles(const TriangleSoup& surface, Lattice
   const TriangleTree tree(surface.points, surface.triangles);
   const std::vector<double> jacobian_before = quad_shape_samples(polygon_mesh(quads)).scaled_jacobian;
   const LatticeQuads original = quads;
-  Distances before = options.max_deviation > 0 ? distances(surface, tree, quads, nullptr) : Distances{};
+  const Distances before = options.max_deviation > 0 ? distances(surface, tree, quads, nullptr) : Distances{};
   // S's side is watched where S is already a quarter of the tolerance away from
   // the quads (tips, protrusions): where the quads hug S, a corner sliding along
   // it shows on the quads' side first
   std::vector<int> watched;
-  {
-    Distances kept;
-    for (std::size_t v = 0; v < before.vertex.size(); ++v)
-      if (before.vertex[v] > 0.25 * options.max_deviation) {
-        watched.push_back(static_cast<int>(v));
-        kept.vertex.push_back(before.vertex[v]);
-        kept.nearest.push_back(before.nearest[v]);
-      }
-    kept.quad = std::move(before.quad);
-    before = std::move(kept);
-  }
+  for (std::size_t v = 0; v < before.vertex.size(); ++v)
+    if (before.vertex[v] > 0.25 * options.max_deviation) watched.push_back(static_cast<int>(v));
   std::vector<char> moved(nP, 0);
   for (int round = 0; round < options.rounds; ++round) {
     const std::vector<Vec3> normals = vertex_normals(polygon_mesh(quads));
-    // the corners of the quads around v with v at p: the sum of their angle
-    // deviations (degrees) and their smallest scaled Jacobian
-    auto local = [&](int v, const Vec3& p) {
-      double sum = 0, worst = std::numeric_limits<double>::infinity();
+    // the sum of the angle deviations (degrees) of the corners of the quads around
+    // v with v at p; and their smallest scaled Jacobian
+    auto angle_sum = [&](int v, const Vec3& p) {
+      double sum = 0;
       for (int q : quads_at[static_cast<std::size_t>(v)]) {
-        const auto& quad = quads.quads[static_cast<std::size_t>(q)];
-        auto at = [&](int k) -> const Vec3& {
-          const int u = quad[static_cast<std::size_t>((k + 4) % 4)];
-          return u == v ? p : quads.points[static_cast<std::size_t>(u)];
-        };
-        for (int k = 0; k < 4; ++k) {
-          const double d = corner_angle_deg(at(k - 1), at(k), at(k + 1)) - 90.0;
-          sum += std::abs(d);
-          worst = std::min(worst, corner_scaled_jacobian(at(k - 1), at(k), at(k + 1),
-                                                         normals[static_cast<std::size_t>(quad[static_cast<std::size_t>(k)])]));
-        }
+        const std::array<Vec3, 4> c = quad_corners(quads, static_cast<std::size_t>(q), v, p);
+        for (std::size_t k = 0; k < 4; ++k) sum += std::abs(corner_angle_deg(c[(k + 3) % 4], c[k], c[(k + 1) % 4]) - 90.0);
       }
-      return std::pair<double, double>{sum, worst};
+      return sum;
+    };
+    auto worst = [&](int v, const Vec3& p) {
+      return worst_corner_jacobian(quads, quads_at[static_cast<std::size_t>(v)], v, p, normals);
     };
     std::size_t moves = 0;
     for (std::size_t vi = 0; vi < nP; ++vi) {
@@ -118,25 +104,24 @@ QuadAngleSmoothingReport smooth_quad_angles(const TriangleSoup& surface, Lattice
         for (int u : quads.quads[static_cast<std::size_t>(q)])
           if (u != v) edge = std::min(edge, (quads.points[static_cast<std::size_t>(u)] - here).norm());
       if (!(edge > 0) || !std::isfinite(edge)) continue;
-      const auto [now, now_worst] = local(v, here);
+      const double now = angle_sum(v, here);
       // the gradient in the tangent plane, by central differences
       const Vec3& n = normals[vi];
       if (n.squaredNorm() == 0) continue;
       const Vec3 x = n.unitOrthogonal(), y = n.cross(x);
       const double h = 1e-4 * edge;
-      const double gx = (local(v, here + h * x).first - local(v, here - h * x).first) / (2 * h);
-      const double gy = (local(v, here + h * y).first - local(v, here - h * y).first) / (2 * h);
+      const double gx = (angle_sum(v, here + h * x) - angle_sum(v, here - h * x)) / (2 * h);
+      const double gy = (angle_sum(v, here + h * y) - angle_sum(v, here - h * y)) / (2 * h);
       const double g = std::hypot(gx, gy);
       if (!(g > 0)) continue;
       const Vec3 down = -(gx * x + gy * y) / g;
-      const double floor = std::min(now_worst, options.keep_jacobian);
+      const double floor = std::min(worst(v, here), options.keep_jacobian);
       // a backtracking step, from a fifth of the shortest edge down to 1/640 of it
       for (double step = 0.2 * edge; step > 0.2 * edge / 128; step *= 0.5) {
         const auto candidate = closest_location(surface, tree, here + step * down);
         const Vec3& p = candidate.first;
         if (options.max_move > 0 && (p - original.points[vi]).norm() > options.max_move) continue;
-        const auto [after, after_worst] = local(v, p);
-        if (after < now && after_worst >= floor) {
+        if (angle_sum(v, p) < now && worst(v, p) >= floor) {
           quads.points[vi] = p;
           quads.locations[vi] = candidate.second;
           moved[vi] = 1;
@@ -147,11 +132,6 @@ QuadAngleSmoothingReport smooth_quad_angles(const TriangleSoup& surface, Lattice
     }
     if (moves == 0) break;
   }
-  // a point sliding along a curved part makes its quads cut across S, or leaves a
-  // tip of S farther from them: the corners of every quad whose deviation grew
-  // past max(before, max_deviation) go back, with those of the quads sharing a
-  // point with it (three times at most); should one still be past it, every point
-  // goes back
   // Moves were judged with the normals of the start of their round, and each with
   // its neighbours where they were then; a point sliding along a curved part makes
   // its quads cut across S, or leaves a tip of S farther from them. The quads
@@ -170,11 +150,13 @@ QuadAngleSmoothingReport smooth_quad_angles(const TriangleSoup& surface, Lattice
     const Distances after = distances(surface, tree, quads, &watched);
     for (std::size_t q = 0; q < after.quad.size(); ++q)
       if (after.quad[q] > std::max(before.quad[q], options.max_deviation)) out.push_back(q);
-    for (std::size_t v = 0; v < after.vertex.size(); ++v)
-      if (after.vertex[v] > std::max(before.vertex[v], options.max_deviation)) {
+    for (std::size_t i = 0; i < after.vertex.size(); ++i) {  // after.vertex: one per watched vertex
+      const std::size_t v = static_cast<std::size_t>(watched[i]);
+      if (after.vertex[i] > std::max(before.vertex[v], options.max_deviation)) {
         out.push_back(static_cast<std::size_t>(before.nearest[v]));
-        out.push_back(static_cast<std::size_t>(after.nearest[v]));
+        out.push_back(static_cast<std::size_t>(after.nearest[i]));
       }
+    }
     return out;
   };
   std::vector<std::size_t> bad = worse();

@@ -14,6 +14,18 @@
 
 namespace qm {
 
+double worst_corner_jacobian(const LatticeQuads& quads, const std::vector<int>& around, int v, const Vec3& p,
+                             const std::vector<Vec3>& normals) {
+  double worst = std::numeric_limits<double>::infinity();
+  for (int q : around) {
+    const std::array<Vec3, 4> c = quad_corners(quads, static_cast<std::size_t>(q), v, p);
+    for (std::size_t k = 0; k < 4; ++k)
+      worst = std::min(worst, corner_scaled_jacobian(c[(k + 3) % 4], c[k], c[(k + 1) % 4],
+                                                     normals[static_cast<std::size_t>(quads.quads[static_cast<std::size_t>(q)][k])]));
+  }
+  return worst;
+}
+
 QuadSmoothingReport smooth_worst_quads(const TriangleSoup& surface, LatticeQuads& quads,
                                        const std::vector<int>& boundary_loop_of_point,
                                        const QuadSmoothingOptions& options) {
@@ -35,20 +47,8 @@ QuadSmoothingReport smooth_worst_quads(const TriangleSoup& surface, LatticeQuads
   std::set<int> moved;
   for (int round = 0; round < options.rounds; ++round) {
     const std::vector<Vec3> normals = vertex_normals(polygon_mesh(quads));
-    // the smallest corner scaled Jacobian of the quads around v with v at p
     auto local_min = [&](int v, const Vec3& p) {
-      double worst = std::numeric_limits<double>::infinity();
-      for (int q : quads_at[static_cast<std::size_t>(v)]) {
-        const auto& quad = quads.quads[static_cast<std::size_t>(q)];
-        auto at = [&](int k) -> const Vec3& {
-          const int u = quad[static_cast<std::size_t>((k + 4) % 4)];
-          return u == v ? p : quads.points[static_cast<std::size_t>(u)];
-        };
-        for (int k = 0; k < 4; ++k)
-          worst = std::min(worst, corner_scaled_jacobian(at(k - 1), at(k), at(k + 1),
-                                                         normals[static_cast<std::size_t>(quad[static_cast<std::size_t>(k)])]));
-      }
-      return worst;
+      return worst_corner_jacobian(quads, quads_at[static_cast<std::size_t>(v)], v, p, normals);
     };
     std::set<int> candidates;
     for (std::size_t q = 0; q < quads.quads.size(); ++q)

@@ -33,6 +33,12 @@ struct QuadSmoothingReport {
   double min_after = 0;          ///< and after
 };
 
+/// The smallest corner scaled Jacobian (quad_quality.h, against `normals`, one per
+/// point) of the quads `around` (their indices) with point v at p: how a trial
+/// move of v is judged here and by the angle smoothing.
+double worst_corner_jacobian(const LatticeQuads& quads, const std::vector<int>& around, int v, const Vec3& p,
+                             const std::vector<Vec3>& normals);
+
 /// Precondition: `boundary_loop_of_point` has one entry per point (-1: interior).
 /// Points move on `surface`; their `locations` become face locations there.
 QuadSmoothingReport smooth_worst_quads(const TriangleSoup& surface, LatticeQuads& quads,

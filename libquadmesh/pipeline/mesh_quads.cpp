@@ -482,12 +482,11 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
     smoothing.max_move = 0.5 * best.size_requested;
     best.smoothing = smooth_worst_quads(best.surface, best.quads, best.boundary_loop_of_point, smoothing);
   }
-  std::vector<Vec3> before_fitting;
   std::vector<char> fitted(best.quads.points.size(), 0);  // the corners the fitting moved stay
   if (best.max_deviation > 0 && !best.quads.quads.empty() &&
       best.refinement.deviation_after <= within_reach * best.max_deviation) {
     stages.next("fitting", "moving corners onto S where the quads cut across it");
-    before_fitting = best.quads.points;
+    const std::vector<Vec3> before_fitting = best.quads.points;
     QuadFittingOptions fitting;
     fitting.tolerance = best.max_deviation;
     best.fitting = fit_quads_to_surface(best.surface, best.quads, best.boundary_loop_of_point, fitting);
