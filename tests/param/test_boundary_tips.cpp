@@ -96,16 +96,10 @@ TEST_CASE("tip_leading_coefficient recovers f_0 of h = sum f_n z^n dz, z = w^(pi
 }
 
 TEST_CASE("a plate whose hole has a 16-degree corner: a zero at the tip, four quads round it") {
-  // 100 x 60 with a round hole and a triangular one whose sharpest corner (at
-  // (50, 30)) is 16.3 degrees: the plate turns 343.7 degrees round it
-  const std::string dir = test::scratch_dir("boundary_tips");
-  const std::string geo = test::write_text(
-      dir, "notch.geo",
-      "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 100, 60};\nDisk(2) = {70, 30, 0, 10};\n"
-      "Point(100) = {15, 25, 0}; Point(101) = {50, 30, 0}; Point(102) = {15, 35, 0};\n"
-      "Line(100) = {100, 101}; Line(101) = {101, 102}; Line(102) = {102, 100};\n"
-      "Curve Loop(100) = {100, 101, 102}; Plane Surface(100) = {100};\n"
-      "BooleanDifference{ Surface{1}; Delete; }{ Surface{2, 100}; Delete; }\n");
+  // examples/plate-v-hole.geo: 100 x 60 with a round hole and a triangular one
+  // whose sharpest corner (at (50, 30)) is 16.3 degrees: the plate turns 343.7
+  // degrees round it
+  const std::string geo = test::example("plate-v-hole.geo");
   io::ReadOptions read;
   read.quad_size_relative = 0.015;
   const TriangleSoup input = analyze_topology(io::read_surface(geo, read).soup).soup;
