@@ -122,6 +122,26 @@ std::vector<double> quad_deviation(const TriangleTree& surface, const std::vecto
   return out;
 }
 
+std::vector<Vec3> deviation_samples(const TriangleSoup& surface, double tolerance) {
+  double length = 0;
+  std::size_t count = 0;
+  for (const Triangle& t : surface.triangles)
+    for (int i = 0; i < 3; ++i, ++count)
+      length += (surface.points[static_cast<std::size_t>(t[i])] - surface.points[static_cast<std::size_t>(t[(i + 1) % 3])]).norm();
+  if (count > 0 && length / static_cast<double>(count) <= 0.5 * tolerance) {
+    std::vector<char> used(surface.points.size(), 0);
+    std::vector<Vec3> vertices;
+    for (const Triangle& t : surface.triangles)
+      for (int v : t)
+        if (!used[static_cast<std::size_t>(v)]) {
+          used[static_cast<std::size_t>(v)] = 1;
+          vertices.push_back(surface.points[static_cast<std::size_t>(v)]);
+        }
+    return vertices;
+  }
+  return surface_samples(surface.points, surface.triangles, {2});
+}
+
 std::vector<double> quad_deviation(const TriangleSoup& surface, const LatticeQuads& quads) {
   return quad_deviation(TriangleTree(surface.points, surface.triangles), surface_samples(surface.points, surface.triangles, {2}), quads);
 }
@@ -203,7 +223,7 @@ DeviationRefinementReport refine_to_deviation(const TriangleSoup& surface,
   QM_ASSERT(boundary_loop_of_point.size() == quads.points.size());
   DeviationRefinementReport report;
   const TriangleTree index(surface.points, surface.triangles);
-  const std::vector<Vec3> samples = surface_samples(surface.points, surface.triangles, {2});
+  const std::vector<Vec3> samples = deviation_samples(surface, options.tolerance);
   const Placement placement(surface, adjacency, index);
   std::vector<double> dev = quad_deviation(index, samples, quads);
   report.deviation_before = max_of(dev);

@@ -66,6 +66,12 @@ std::vector<double> quad_deviation(const TriangleSoup& surface, const LatticeQua
 std::vector<double> quad_deviation(const TriangleTree& surface, const std::vector<Vec3>& surface_samples,
                                    const LatticeQuads& quads);
 
+/// S's side of the deviation is measured at these points: S's vertices where its
+/// mean edge is at most half the tolerance (every point of S is then within about a
+/// quarter of the tolerance from one: a fine scan needs no more), else its
+/// vertices, edge midpoints and triangle centroids.
+std::vector<Vec3> deviation_samples(const TriangleSoup& surface, double tolerance);
+
 /// Splits chords until every quad's deviation is within options.tolerance, the
 /// budget is spent, or a round brings nothing; then up to options.min_quads. `boundary_loop_of_point` (per quad
 /// point, the boundary loop or -1) is extended for the new points; the new points'

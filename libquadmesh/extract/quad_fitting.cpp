@@ -111,7 +111,7 @@ QuadFittingReport fit_quads_to_surface(const TriangleSoup& surface, LatticeQuads
   // (quad_to_surface); per sample of S, its nearest quad and the distance to it
   std::vector<double> quad_side(quads.quads.size());
   for (std::size_t k = 0; k < quads.quads.size(); ++k) quad_side[k] = quad_to_surface(surface_tree, quad_corners(quads, k));
-  const std::vector<Vec3> samples = surface_samples(surface.points, surface.triangles, {2});
+  const std::vector<Vec3> samples = deviation_samples(surface, options.tolerance);
   std::vector<double> distance(samples.size());
   std::vector<int> nearest(samples.size());
   std::vector<std::vector<int>> samples_of(quads.quads.size());

@@ -82,3 +82,22 @@ TEST_CASE("fitting: quads within the tolerance are left alone") {
   CHECK(report.deviation_after == report.deviation_before);
   CHECK(q.points == before.points);
 }
+
+TEST_CASE("deviation samples: S's vertices alone where its edges are at most half the tolerance") {
+  const TriangleSoup coarse = test::grid(8);  // 81 vertices, 208 edges, 128 triangles; mean edge 0.142
+  CHECK(deviation_samples(coarse, 1.0).size() == 81);
+  CHECK(deviation_samples(coarse, 0.2).size() == 81 + 208 + 128);  // edge midpoints and centroids too
+  // on a fine S the vertices give S's side of the deviation within a quarter of the tolerance
+  const TriangleSoup fine = peaked_grid(32);
+  const LatticeQuads q = peaked_quads(4);
+  const double tolerance = 0.1;
+  const std::vector<Vec3> vertices = deviation_samples(fine, tolerance);
+  REQUIRE(vertices.size() == 33 * 33);
+  const std::vector<double> cheap = quad_deviation(TriangleTree(fine.points, fine.triangles), vertices, q);
+  const std::vector<double> full = quad_deviation(fine, q);
+  for (std::size_t k = 0; k < full.size(); ++k) {
+    CHECK(cheap[k] <= full[k] + 1e-12);
+    CHECK(cheap[k] >= full[k] - 0.25 * tolerance);
+  }
+  CHECK(*std::max_element(cheap.begin(), cheap.end()) > 0.15);  // the peak is still seen
+}
