@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace qm {
@@ -149,11 +150,15 @@ std::vector<double> quad_deviation(const TriangleSoup& surface, const LatticeQua
 namespace {
 
 /// One round: splits the chords through the quads whose deviation exceeds
-/// `threshold`, worst first, as long as the quad count stays within `max_quads`;
-/// places the new points and updates `dev`. Returns the number of chords split.
+/// `threshold`, worst first, as long as the quad count stays within `max_quads`
+/// and the chords of at most `max_chosen` quads are taken, leaving out the
+/// `forbidden` ones (quad, direction); places the new points and updates `dev`.
+/// Returns the number of chords split; `chosen_crossings` says which.
 std::size_t split_round(const Placement& placement, const TriangleTree& index, const std::vector<Vec3>& samples,
                         LatticeQuads& quads, std::vector<int>& boundary_loop_of_point, std::vector<double>& dev,
-                        double threshold, std::size_t max_quads) {
+                        double threshold, std::size_t max_quads,
+                        const std::vector<std::pair<int, int>>& forbidden, std::size_t max_chosen,
+                        std::vector<std::pair<int, int>>& chosen_crossings) {
   std::vector<int> worst;
   for (std::size_t k = 0; k < dev.size(); ++k)
     if (dev[k] > threshold) worst.push_back(static_cast<int>(k));
@@ -161,9 +166,13 @@ std::size_t split_round(const Placement& placement, const TriangleTree& index, c
   std::sort(worst.begin(), worst.end(), [&](int a, int b) { return dev[static_cast<std::size_t>(a)] > dev[static_cast<std::size_t>(b)]; });
   const QuadChords chords = quad_chords(quads.quads);
   std::vector<char> split(chords.length.size(), 0);
+  for (const auto& [quad, direction] : forbidden)
+    split[static_cast<std::size_t>(chords.chord_of[static_cast<std::size_t>(quad)][static_cast<std::size_t>(direction)])] = 2;
   std::size_t planned = 0, chosen = 0;
+  chosen_crossings.clear();
   const std::size_t budget = max_quads > quads.quads.size() ? max_quads - quads.quads.size() : 0;
   for (int k : worst) {
+    if (chosen >= max_chosen) break;
     const Quad& c = quads.quads[static_cast<std::size_t>(k)];
     // cut the long edges: direction 0 cuts edges 0 and 2
     const double l0 = length(quads, c, 0) + length(quads, c, 2);
@@ -181,6 +190,7 @@ std::size_t split_round(const Placement& placement, const TriangleTree& index, c
       const std::size_t cost = static_cast<std::size_t>(chords.length[static_cast<std::size_t>(chord)]);
       if (split[static_cast<std::size_t>(chord)] || planned + cost > budget) continue;
       split[static_cast<std::size_t>(chord)] = 1;
+      chosen_crossings.push_back({k, d});
       planned += cost;
       ++chosen;
     }
@@ -188,6 +198,7 @@ std::size_t split_round(const Placement& placement, const TriangleTree& index, c
   if (chosen == 0) return 0;
   const int n = static_cast<int>(quads.points.size());
   const std::vector<Quad> before = quads.quads;
+  for (char& c : split) c = c == 1 ? 1 : 0;
   SplitQuads out = split_chords(before, n, chords, split);
   for (const SplitPoint& sp : out.new_points) {
     if (sp.quad >= 0) {
@@ -231,29 +242,45 @@ DeviationRefinementReport refine_to_deviation(const TriangleSoup& surface,
   // a new point is placed on S by closest point; on a thin or sharply curved part
   // that point can fall where the split quads turn over or get thin: a round that
   // turns a quad over, or takes the smallest scaled Jacobian below both its value
-  // before the refinement and the usual 0.3 floor, is undone and the refinement
-  // stops there
+  // before the refinement and the usual 0.3 floor, is undone
   auto [inverted, min_jacobian] = inverted_quads(quads);
   const double jacobian_floor = std::min(min_jacobian, options.min_scaled_jacobian);
-  auto round = [&](double threshold, std::size_t max_quads) {
+  // chords whose split was undone, as (quad, direction) of the current quads: a
+  // round that fails is tried again with the chords of one quad at a time (the
+  // worst), and chords that fail alone are left out until a split succeeds (the
+  // quads are numbered anew then); at most 8 such tries per round
+  std::vector<std::pair<int, int>> forbidden, crossings;
+  auto attempt = [&](double threshold, std::size_t max_quads, std::size_t max_chosen) {
     const LatticeQuads before = quads;
     const std::vector<int> loops_before = boundary_loop_of_point;
     const std::vector<double> dev_before = dev;
-    const std::size_t chosen =
-        split_round(placement, index, samples, quads, boundary_loop_of_point, dev, threshold, max_quads);
-    if (chosen == 0) return false;
+    const std::size_t chosen = split_round(placement, index, samples, quads, boundary_loop_of_point, dev, threshold,
+                                           max_quads, forbidden, max_chosen, crossings);
+    if (chosen == 0) return 0;
     const auto [now, jacobian] = inverted_quads(quads);
     if (now > inverted || jacobian < jacobian_floor) {
       quads = before;
       boundary_loop_of_point = loops_before;
       dev = dev_before;
       ++report.rounds_undone;
-      return false;
+      return -1;
     }
     inverted = now;
     report.chords_split += chosen;
     ++report.rounds;
-    return true;
+    forbidden.clear();
+    return 1;
+  };
+  auto round = [&](double threshold, std::size_t max_quads) {
+    const int result = attempt(threshold, max_quads, std::numeric_limits<std::size_t>::max());
+    if (result >= 0) return result > 0;
+    for (int single = 0; single < 8; ++single) {
+      const int one = attempt(threshold, max_quads, 1);
+      if (one > 0) return true;
+      if (one == 0) return false;
+      forbidden.insert(forbidden.end(), crossings.begin(), crossings.end());
+    }
+    return false;
   };
   // the worst quads first: the largest deviation is what the budget must bring down
   for (int r = 0; r < options.max_rounds; ++r)

@@ -39,7 +39,10 @@ struct DeviationRefinementReport {
   std::size_t quads_added = 0;
   int rounds = 0;
   bool tolerance_met = false;   ///< after the rounds within max_quads (before the min_quads rounds)
-  int rounds_undone = 0;        ///< a round that turned a quad over (or too thin) is undone, and the refinement stops
+  /// splits undone: they turned a quad over (or made one too thin). The round is
+  /// tried again one quad's chords at a time, leaving out those that fail alone;
+  /// the refinement stops when 8 such tries fail
+  int rounds_undone = 0;
 };
 
 /// The points of a quad (corners in order) whose distance to S is its side of
