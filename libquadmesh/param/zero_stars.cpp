@@ -108,13 +108,16 @@ std::vector<ZeroVertex> merge_close_zeros(const TriangleSoup& soup, const Surfac
       if (hit == zero_at.end()) continue;
       const ZeroVertex& other = zeros[static_cast<std::size_t>(hit->second)];
       // two zeros of one boundary loop need only distinct integers U, which the
-      // quantization gives consecutive zeros; merged, the arc between them would
-      // collapse to a point
+      // quantization gives consecutive zeros: the arc between them stretches to a
+      // cell. Merged, that arc collapses to a point, and the map, folded along it,
+      // is untangled into two branch points again, now at one lattice U (the quads
+      // then leave a gap there): only an arc under a tenth of a cell (a stretch of
+      // more than 10, e.g. a one-triangle hole) is collapsed
       if (zeros[i].on_boundary && other.on_boundary) {
         const bool same_loop = adjacency.loop_of_vertex[static_cast<std::size_t>(zeros[i].vertex)] ==
                                adjacency.loop_of_vertex[static_cast<std::size_t>(other.vertex)];
         // zeros of two loops cannot share a vertex: each loop turns by its own zeros
-        if (!same_loop || d >= 0.5 * radius) continue;
+        if (!same_loop || d >= 0.1 * radius) continue;
       }
       groups.unite(static_cast<int>(i), hit->second);
     }

@@ -43,7 +43,7 @@ std::unordered_map<int, double> image_ball(const TriangleSoup& soup, const Surfa
 
 /// Zeros closer than `radius` in the image of `map` (shortest paths along edges,
 /// edge length |map(e)|) cannot be separated by the grid (two zeros of one boundary
-/// loop can, down to radius / 2: they need distinct integers U only, which the
+/// loop can, down to radius / 10: they need distinct integers U only, which the
 /// quantization gives consecutive ones; zeros of two loops are never merged, each
 /// loop turns by its own zeros): they are merged into one
 /// zero whose order is the sum of theirs (counted on the double when the merged

@@ -220,7 +220,9 @@ TEST_CASE("mesh: a coarse plate whose first rounding drops cells is rounded agai
   // a 120 x 40 plate with six holes and rounded corners, meshed coarsely (2.5%):
   // beside one hole the untangling left a fold it could not remove, and the cells
   // over it were dropped (a gap and a warning); the same form rounded at a nearby
-  // scale leaves none
+  // scale left none. Since close boundary zeros of one loop are kept apart (not
+  // merged), the first rounding leaves none either; the rounding retries are
+  // tested in test_mesh_quads ("rounded again at a nearby scale")
   const WrittenMesh m = mesh_geo(test::scratch_dir("cli_dropped"),
       "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 120, 40, 6.66667};\n"
       "Disk(2) = {49.03, 18.53, 0, 7.14};\nDisk(3) = {15.99, 15.23, 0, 4.78};\n"
@@ -229,7 +231,6 @@ TEST_CASE("mesh: a coarse plate whose first rounding drops cells is rounded agai
       "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:7}; Delete; }\n",
       "2.5%");
   const auto& j = m.report;
-  CHECK(j["form"]["rounding_attempts"].get<int>() >= 1);
   CHECK(j["extraction"]["incomplete_cells"].get<int>() + j["extraction"]["degenerate_cells"].get<int>() == 0);
   CHECK(j["extraction"]["stray_boundary_points"].get<int>() == 0);
   CHECK(j["quality"]["euler_characteristic"].get<int>() == -5);
@@ -238,17 +239,32 @@ TEST_CASE("mesh: a coarse plate whose first rounding drops cells is rounded agai
 }
 
 TEST_CASE("mesh: quads whose boundary strays from the input's are written with one warning line naming the first") {
-  // a 150 x 50 plate with five holes at 1.44%: two boundary zeros on one hole and a
-  // narrow part beside it; every rounding tried leaves quads whose boundary cuts
-  // across the holes' arcs, with the input's Euler characteristic and loops
-  const WrittenMesh m = mesh_geo(test::scratch_dir("cli_stray"), test::five_hole_plate_geo(), "1.44%");
+  // a 150 x 50 plate with six holes at 1.2% (p7 of scripts/plate-sweep): a hole 4.15
+  // from the plate's edge, with two boundary zeros on its far side; the rounding
+  // leaves quads whose boundary cuts across that hole's arc, with the input's Euler
+  // characteristic and loops (at 1.5% it meets every criterion)
+  const WrittenMesh m = mesh_geo(test::scratch_dir("cli_stray"),
+      "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 150, 50, 10};\n"
+      "Disk(2) = {122.11, 20.79, 0, 4.67};\nDisk(3) = {26.16, 42.26, 0, 3.11};\n"
+      "Disk(4) = {118.24, 39.33, 0, 5.60};\nDisk(5) = {8.58, 26.46, 0, 4.43};\n"
+      "Disk(6) = {40.01, 13.69, 0, 4.42};\nDisk(7) = {91.62, 24.62, 0, 4.57};\n"
+      "BooleanDifference{ Surface{1}; Delete; }{ Surface{2, 3, 4, 5, 6, 7}; Delete; }\n",
+      "1.2%");
   const int stray = m.report["extraction"]["stray_boundary_points"].get<int>();
   CHECK(stray > 0);
-  const auto lines = m.run.error_lines();
-  REQUIRE(lines.size() >= 1);
-  CHECK(lines[0].rfind("quadmesh: warning: " + std::to_string(stray) +
-                           " points of the quads' boundary are not on the input's boundary, the first near (",
-                       0) == 0);
+  CHECK(m.report["quality"]["euler_characteristic"].get<int>() == -5);
+  CHECK(m.report["quality"]["boundary_loops"].get<int>() == 7);
+  // one line for the strays among the warnings (the gap's dropped cells and the
+  // deviation have their own)
+  int stray_lines = 0;
+  for (const std::string& line : m.run.error_lines()) {
+    if (line.find("points of the quads' boundary are not on the input's boundary") == std::string::npos) continue;
+    ++stray_lines;
+    CHECK(line.rfind("quadmesh: warning: " + std::to_string(stray) +
+                         " points of the quads' boundary are not on the input's boundary, the first near (",
+                     0) == 0);
+  }
+  CHECK(stray_lines == 1);
 }
 
 TEST_CASE("mesh: an L-bracket with a long arm fails fast, naming the long end (a limit of the method)") {
