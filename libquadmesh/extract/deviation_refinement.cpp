@@ -150,9 +150,10 @@ std::vector<double> quad_deviation(const TriangleSoup& surface, const LatticeQua
 namespace {
 
 /// One round: splits the chords through the quads whose deviation exceeds
-/// `threshold`, worst first, as long as the quad count stays within `max_quads`
-/// and the chords of at most `max_chosen` quads are taken, leaving out the
-/// `forbidden` ones (quad, direction); places the new points and updates `dev`.
+/// `threshold`, worst first, as long as the quad count stays within `max_quads`,
+/// taking no further quad once `max_chosen` chords are taken (a near-square quad
+/// gives two) and leaving out the `forbidden` ones (quad, direction); places the
+/// new points and updates `dev`.
 /// Returns the number of chords split; `chosen_crossings` says which.
 std::size_t split_round(const Placement& placement, const TriangleTree& index, const std::vector<Vec3>& samples,
                         LatticeQuads& quads, std::vector<int>& boundary_loop_of_point, std::vector<double>& dev,
