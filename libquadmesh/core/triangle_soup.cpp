@@ -16,4 +16,11 @@ std::string describe_triangle(const TriangleSoup& soup, int f) {
                      soup.point_label(t[0]), soup.point_label(t[1]), soup.point_label(t[2]));
 }
 
+double mean_edge_length(const TriangleSoup& soup) {
+  double sum = 0;
+  for (const Triangle& t : soup.triangles)
+    for (int k = 0; k < 3; ++k) sum += (soup.points[t[k]] - soup.points[t[(k + 1) % 3]]).norm();
+  return soup.triangles.empty() ? 0.0 : sum / (3.0 * static_cast<double>(soup.triangles.size()));
+}
+
 }  // namespace qm

@@ -63,4 +63,8 @@ std::string describe_vertex(const TriangleSoup& soup, int i);
 /// "triangle 7 (vertices 1, 2, 3)": how messages name a triangle of the soup.
 std::string describe_triangle(const TriangleSoup& soup, int f);
 
+/// Mean edge length of a soup (each edge counted once per triangle side; 0 without
+/// triangles).
+double mean_edge_length(const TriangleSoup& soup);
+
 }  // namespace qm

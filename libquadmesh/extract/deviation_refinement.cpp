@@ -124,12 +124,7 @@ std::vector<double> quad_deviation(const TriangleTree& surface, const std::vecto
 }
 
 std::vector<Vec3> deviation_samples(const TriangleSoup& surface, double tolerance) {
-  double length = 0;
-  std::size_t count = 0;
-  for (const Triangle& t : surface.triangles)
-    for (int i = 0; i < 3; ++i, ++count)
-      length += (surface.points[static_cast<std::size_t>(t[i])] - surface.points[static_cast<std::size_t>(t[(i + 1) % 3])]).norm();
-  if (count > 0 && length / static_cast<double>(count) <= 0.5 * tolerance) {
+  if (!surface.triangles.empty() && mean_edge_length(surface) <= 0.5 * tolerance) {
     std::vector<char> used(surface.points.size(), 0);
     std::vector<Vec3> vertices;
     for (const Triangle& t : surface.triangles)

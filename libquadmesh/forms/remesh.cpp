@@ -11,13 +11,6 @@ namespace qm {
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-double mean_edge_length(const TriangleSoup& soup) {
-  double sum = 0;
-  for (const Triangle& t : soup.triangles)
-    for (int k = 0; k < 3; ++k) sum += (soup.points[t[k]] - soup.points[t[(k + 1) % 3]]).norm();
-  return soup.triangles.empty() ? 0.0 : sum / (3.0 * static_cast<double>(soup.triangles.size()));
-}
-
 double remesh_target(const TriangleSoup& soup, const RemeshOptions& options) {
   return options.target_edge_length > 0 ? options.target_edge_length : 0.4 * mean_edge_length(soup);
 }

@@ -23,7 +23,4 @@ double remesh_target(const TriangleSoup& soup, const RemeshOptions& options);
 /// curve information is dropped. The topology (chi, boundary loops) is unchanged.
 TriangleSoup remesh_isotropic(const TriangleSoup& soup, const RemeshOptions& options = {});
 
-/// Mean edge length of a soup (each edge counted once per triangle side).
-double mean_edge_length(const TriangleSoup& soup);
-
 }  // namespace qm
