@@ -161,9 +161,9 @@ std::size_t split_round(const Placement& placement, const TriangleTree& index, c
   if (worst.empty()) return 0;
   std::sort(worst.begin(), worst.end(), [&](int a, int b) { return dev[static_cast<std::size_t>(a)] > dev[static_cast<std::size_t>(b)]; });
   const QuadChords chords = quad_chords(quads.quads);
-  std::vector<char> split(chords.length.size(), 0);
+  std::vector<char> split(chords.length.size(), 0), left_out(chords.length.size(), 0);
   for (const auto& [quad, direction] : forbidden)
-    split[static_cast<std::size_t>(chords.chord_of[static_cast<std::size_t>(quad)][static_cast<std::size_t>(direction)])] = 2;
+    left_out[static_cast<std::size_t>(chords.chord_of[static_cast<std::size_t>(quad)][static_cast<std::size_t>(direction)])] = 1;
   std::size_t planned = 0, chosen = 0;
   chosen_crossings.clear();
   const std::size_t budget = max_quads > quads.quads.size() ? max_quads - quads.quads.size() : 0;
@@ -184,7 +184,8 @@ std::size_t split_round(const Placement& placement, const TriangleTree& index, c
     for (int d : directions) {
       const int chord = of[static_cast<std::size_t>(d)];
       const std::size_t cost = static_cast<std::size_t>(chords.length[static_cast<std::size_t>(chord)]);
-      if (split[static_cast<std::size_t>(chord)] || planned + cost > budget) continue;
+      if (split[static_cast<std::size_t>(chord)] || left_out[static_cast<std::size_t>(chord)] || planned + cost > budget)
+        continue;
       split[static_cast<std::size_t>(chord)] = 1;
       chosen_crossings.push_back({k, d});
       planned += cost;
@@ -194,7 +195,6 @@ std::size_t split_round(const Placement& placement, const TriangleTree& index, c
   if (chosen == 0) return 0;
   const int n = static_cast<int>(quads.points.size());
   const std::vector<Quad> before = quads.quads;
-  for (char& c : split) c = c == 1 ? 1 : 0;
   SplitQuads out = split_chords(before, n, chords, split);
   for (const SplitPoint& sp : out.new_points) {
     if (sp.quad >= 0) {
