@@ -204,13 +204,7 @@ TEST_CASE("two boundary zeros of a hole beside a narrow part stay on distinct la
   // quads left the region beside the arc uncovered (3 stray boundary points,
   // Hausdorff 1.5%)
   const std::string dir = test::scratch_dir("mesh_boundary_zero_pair");
-  const char* geo =
-      "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 150, 50, 10};\n"
-      "Disk(2) = {122.11, 20.79, 0, 4.67};\nDisk(3) = {26.16, 42.26, 0, 3.11};\n"
-      "Disk(4) = {118.24, 39.33, 0, 5.60};\nDisk(5) = {8.58, 26.46, 0, 4.43};\n"
-      "Disk(6) = {40.01, 13.69, 0, 4.42};\nDisk(7) = {91.62, 24.62, 0, 4.57};\n"
-      "BooleanDifference{ Surface{1}; Delete; }{ Surface{2, 3, 4, 5, 6, 7}; Delete; }\n";
-  const TriangleSoup input = analysed(test::write_text(dir, "p7.geo", geo), 0.015);
+  const TriangleSoup input = analysed(test::write_text(dir, "p7.geo", test::edge_hole_plate_geo()), 0.015);
   QuadMeshOptions options;
   options.size_relative = 0.015;
   const QuadMeshResult r = mesh_quads(input, options);
@@ -233,8 +227,7 @@ TEST_CASE("a plate whose first rounding leaves folds is rounded again at a nearb
   // A 150 x 50 plate with five holes, two of them 6.6 apart: at the scale of 1.5%
   // the untangling left folds between them and 7 cells were dropped (a gap,
   // Hausdorff 3%). The same form rounded at a few percent more or fewer quads has
-  // none. (At 1.44% and 1.53% every rounding tried leaves quad boundary points off the
-  // plate's boundary: test_cli.)
+  // none.
   const std::string dir = test::scratch_dir("mesh_rounding_retry");
   const TriangleSoup input = analysed(test::write_text(dir, "five-holes.geo", test::five_hole_plate_geo()), 0.015);
   QuadMeshOptions options;

@@ -35,6 +35,14 @@ std::string five_hole_plate_geo() {
          "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:6}; Delete; }\n";
 }
 
+std::string edge_hole_plate_geo() {
+  return "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 150, 50, 10};\n"
+         "Disk(2) = {122.11, 20.79, 0, 4.67};\nDisk(3) = {26.16, 42.26, 0, 3.11};\n"
+         "Disk(4) = {118.24, 39.33, 0, 5.60};\nDisk(5) = {8.58, 26.46, 0, 4.43};\n"
+         "Disk(6) = {40.01, 13.69, 0, 4.42};\nDisk(7) = {91.62, 24.62, 0, 4.57};\n"
+         "BooleanDifference{ Surface{1}; Delete; }{ Surface{2, 3, 4, 5, 6, 7}; Delete; }\n";
+}
+
 TriangleSoup annulus(double r0, double r1, int rings, int sectors) {
   TriangleSoup s;
   for (int i = 0; i <= rings; ++i)

@@ -17,9 +17,13 @@ std::string scratch_dir(const std::string& test_name);
 /// Writes `text` to dir/name (a .geo written by a test); returns the path.
 std::string write_text(const std::string& dir, const std::string& name, const std::string& text);
 /// A 150 x 50 CAD plate with five round holes, two of them 6.6 apart (OpenCASCADE
-/// .geo text): its first rounding at 1.5% left folds and dropped cells, and at
-/// 1.44% every rounding leaves quad boundary points off the plate's boundary.
+/// .geo text): its first rounding at 1.5% leaves folds and dropped cells.
 std::string five_hole_plate_geo();
+/// A 150 x 50 CAD plate with six round holes, one 4.15 from the plate's edge with
+/// two boundary zeros on its far side (p7 of scripts/plate-sweep): at 1.5% they
+/// were merged and the quads left a gap beside the hole; at 1.2% the quads'
+/// boundary still leaves the hole's.
+std::string edge_hole_plate_geo();
 
 /// Planar annulus r0 <= |z| <= r1 with `rings` x `sectors` quads split in two
 /// (genus 0, 2 boundaries, chi 0).

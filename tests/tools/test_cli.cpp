@@ -243,13 +243,7 @@ TEST_CASE("mesh: quads whose boundary strays from the input's are written with o
   // from the plate's edge, with two boundary zeros on its far side; the rounding
   // leaves quads whose boundary cuts across that hole's arc, with the input's Euler
   // characteristic and loops (at 1.5% it meets every criterion)
-  const WrittenMesh m = mesh_geo(test::scratch_dir("cli_stray"),
-      "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 150, 50, 10};\n"
-      "Disk(2) = {122.11, 20.79, 0, 4.67};\nDisk(3) = {26.16, 42.26, 0, 3.11};\n"
-      "Disk(4) = {118.24, 39.33, 0, 5.60};\nDisk(5) = {8.58, 26.46, 0, 4.43};\n"
-      "Disk(6) = {40.01, 13.69, 0, 4.42};\nDisk(7) = {91.62, 24.62, 0, 4.57};\n"
-      "BooleanDifference{ Surface{1}; Delete; }{ Surface{2, 3, 4, 5, 6, 7}; Delete; }\n",
-      "1.2%");
+  const WrittenMesh m = mesh_geo(test::scratch_dir("cli_stray"), test::edge_hole_plate_geo(), "1.2%");
   const int stray = m.report["extraction"]["stray_boundary_points"].get<int>();
   CHECK(stray > 0);
   CHECK(m.report["quality"]["euler_characteristic"].get<int>() == -5);
