@@ -78,7 +78,7 @@ double max_of(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::max
 /// The quads with a corner whose scaled Jacobian (the quality module's) is <= 0, and
 /// the smallest scaled Jacobian.
 std::pair<std::size_t, double> inverted_quads(const LatticeQuads& quads) {
-  const std::vector<double> jacobians = quad_shape_samples(polygon_mesh(quads)).scaled_jacobian;
+  const std::vector<double> jacobians = sound_scaled_jacobians(polygon_mesh(quads));
   const auto inverted =
       static_cast<std::size_t>(std::count_if(jacobians.begin(), jacobians.end(), [](double j) { return j <= 0; }));
   return {inverted, jacobians.empty() ? 1.0 : *std::min_element(jacobians.begin(), jacobians.end())};

@@ -69,7 +69,7 @@ QuadAngleSmoothingReport smooth_quad_angles(const TriangleSoup& surface, Lattice
   if (quads.quads.empty()) return report;
 
   const TriangleTree tree(surface.points, surface.triangles);
-  const std::vector<double> jacobian_before = quad_shape_samples(polygon_mesh(quads)).scaled_jacobian;
+  const std::vector<double> jacobian_before = sound_scaled_jacobians(polygon_mesh(quads));
   const LatticeQuads original = quads;
   const Distances before = options.max_deviation > 0 ? distances(surface, tree, quads, nullptr) : Distances{};
   // S's side is watched where S is already a quarter of the tolerance away from
@@ -143,7 +143,7 @@ QuadAngleSmoothingReport smooth_quad_angles(const TriangleSoup& surface, Lattice
   // every point goes back.
   auto worse = [&] {
     std::vector<std::size_t> out;
-    const std::vector<double> jacobian = quad_shape_samples(polygon_mesh(quads)).scaled_jacobian;
+    const std::vector<double> jacobian = sound_scaled_jacobians(polygon_mesh(quads));
     for (std::size_t q = 0; q < jacobian.size(); ++q)
       if (jacobian[q] < std::min(jacobian_before[q], options.keep_jacobian)) out.push_back(q);
     if (options.max_deviation <= 0 || before.quad.empty()) return out;

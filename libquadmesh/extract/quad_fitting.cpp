@@ -44,15 +44,16 @@ struct QuadStar {
     return {out.begin(), out.end()};
   }
 
-  /// The smallest corner scaled Jacobian of the quads `ring` with point v at p, as
-  /// the quality module computes it (vertex normals from the vector areas of the
-  /// quads at each corner). With ring = ring(v), these are all the quads whose
-  /// value depends on where v is.
+  /// The smallest sound_scaled_jacobian (quad_quality.h) of the quads `ring` with
+  /// point v at p, as the quality module computes it (vertex normals from the
+  /// vector areas of the quads at each corner). With ring = ring(v), these are
+  /// all the quads whose value depends on where v is.
   double min_scaled_jacobian(const std::vector<int>& ring, int v, const Vec3& p) const {
     double worst = std::numeric_limits<double>::infinity();
     for (int k : ring) {
       const auto c = corners(k, v, p);
       const Vec3 own = (c[2] - c[0]).cross(c[3] - c[1]);
+      std::array<Vec3, 4> normals;
       for (std::size_t i = 0; i < 4; ++i) {
         Vec3 n = Vec3::Zero();
         for (int a : quads_at[static_cast<std::size_t>(quads.quads[static_cast<std::size_t>(k)][i])]) {
@@ -61,8 +62,9 @@ struct QuadStar {
         }
         if (n.squaredNorm() == 0) n = own;
         if (n.squaredNorm() > 0) n.normalize();
-        worst = std::min(worst, corner_scaled_jacobian(c[(i + 3) % 4], c[i], c[(i + 1) % 4], n));
+        normals[i] = n;
       }
+      worst = std::min(worst, sound_scaled_jacobian(c, normals));
     }
     return worst;
   }
@@ -132,7 +134,7 @@ QuadFittingReport fit_quads_to_surface(const TriangleSoup& surface, LatticeQuads
   report.deviation_after = report.deviation_before;
   if (report.deviation_before <= options.tolerance) return report;
   const auto min_jacobian_now = [&] {
-    const std::vector<double> j = quad_shape_samples(polygon_mesh(quads)).scaled_jacobian;
+    const std::vector<double> j = sound_scaled_jacobians(polygon_mesh(quads));
     return j.empty() ? 1.0 : *std::min_element(j.begin(), j.end());
   };
   const double jacobian_before = min_jacobian_now();

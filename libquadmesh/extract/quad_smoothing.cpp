@@ -19,9 +19,10 @@ double worst_corner_jacobian(const LatticeQuads& quads, const std::vector<int>& 
   double worst = std::numeric_limits<double>::infinity();
   for (int q : around) {
     const std::array<Vec3, 4> c = quad_corners(quads, static_cast<std::size_t>(q), v, p);
+    std::array<Vec3, 4> n;
     for (std::size_t k = 0; k < 4; ++k)
-      worst = std::min(worst, corner_scaled_jacobian(c[(k + 3) % 4], c[k], c[(k + 1) % 4],
-                                                     normals[static_cast<std::size_t>(quads.quads[static_cast<std::size_t>(q)][k])]));
+      n[k] = normals[static_cast<std::size_t>(quads.quads[static_cast<std::size_t>(q)][k])];
+    worst = std::min(worst, sound_scaled_jacobian(c, n));
   }
   return worst;
 }
@@ -40,7 +41,7 @@ QuadSmoothingReport smooth_worst_quads(const TriangleSoup& surface, LatticeQuads
   for (std::size_t v = 0; v < nP; ++v) movable[v] = boundary_loop_of_point[v] < 0 && quads_at[v].size() == 4;
 
   const TriangleTree tree(surface.points, surface.triangles);
-  std::vector<double> jacobian = quad_shape_samples(polygon_mesh(quads)).scaled_jacobian;
+  std::vector<double> jacobian = sound_scaled_jacobians(polygon_mesh(quads));
   report.min_before = jacobian.empty() ? 1.0 : *std::min_element(jacobian.begin(), jacobian.end());
   report.min_after = report.min_before;
   const LatticeQuads original = quads;
@@ -106,7 +107,7 @@ QuadSmoothingReport smooth_worst_quads(const TriangleSoup& surface, LatticeQuads
         ++moves;
       }
     }
-    jacobian = quad_shape_samples(polygon_mesh(quads)).scaled_jacobian;
+    jacobian = sound_scaled_jacobians(polygon_mesh(quads));
     if (moves == 0) break;
   }
   report.min_after = jacobian.empty() ? 1.0 : *std::min_element(jacobian.begin(), jacobian.end());

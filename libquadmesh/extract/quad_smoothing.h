@@ -29,13 +29,14 @@ struct QuadSmoothingOptions {
 
 struct QuadSmoothingReport {
   std::size_t moved_points = 0;  ///< distinct points moved
-  double min_before = 0;         ///< smallest scaled Jacobian (the quality module's), before
+  double min_before = 0;         ///< smallest sound_scaled_jacobian (quad_quality.h), before
   double min_after = 0;          ///< and after
 };
 
-/// The smallest corner scaled Jacobian (quad_quality.h, against `normals`, one per
-/// point) of the quads `around` (their indices) with point v at p: how a trial
-/// move of v is judged here and by the angle smoothing.
+/// The smallest sound_scaled_jacobian (quad_quality.h: Verdict's scaled Jacobian
+/// capped by the normal consistency against `normals`, one per point) of the quads
+/// `around` (their indices) with point v at p: how a trial move of v is judged
+/// here and by the angle smoothing.
 double worst_corner_jacobian(const LatticeQuads& quads, const std::vector<int>& around, int v, const Vec3& p,
                              const std::vector<Vec3>& normals);
 

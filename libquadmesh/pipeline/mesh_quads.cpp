@@ -116,8 +116,12 @@ double longest_image_edge(const FaceMap& map) {
   return longest;
 }
 
+/// The smallest sound_scaled_jacobian of the quads (quad_quality.h: Verdict's
+/// scaled Jacobian, capped by the normal consistency): what the 0.3 floor and the
+/// ranking of results hold the quads to. 1 without quads.
 double min_scaled_jacobian(const LatticeQuads& quads) {
-  return quad_quality(polygon_mesh(quads), nullptr).min_scaled_jacobian;
+  const std::vector<double> j = sound_scaled_jacobians(polygon_mesh(quads));
+  return j.empty() ? 1.0 : *std::min_element(j.begin(), j.end());
 }
 
 /// A deviation more than this many times the tolerance is out of the reach of the
@@ -191,18 +195,20 @@ void note_stray_boundary(QuadMeshResult& r) {
 }
 
 /// What is wrong with a result, worst first (lexicographic; lower is better): the
-/// topology is not the input's, inverted quads, dropped cells and quad boundary
-/// points off S's boundary (stray_boundary_points), issue 4's shape
-/// criteria not met (min scaled Jacobian >= 0.3, mean angle deviation <= 5
-/// degrees), then the smallest scaled Jacobian (negated).
+/// topology is not the input's, inverted or flipped quads, dropped cells and quad
+/// boundary points off S's boundary (stray_boundary_points), issue 4's shape
+/// criteria not met (min scaled Jacobian >= 0.3, Verdict's capped by the normal
+/// consistency; mean angle deviation <= 5 degrees), then that smallest scaled
+/// Jacobian (negated).
 std::tuple<int, std::size_t, std::size_t, int, double> shortcomings(const QuadMeshResult& r,
                                                                     std::pair<int, int> input_topology) {
   const QuadQuality q = quad_quality(polygon_mesh(r.quads), nullptr);
   const bool topology = q.euler_characteristic == input_topology.first && q.boundary_loops == input_topology.second;
-  const int unmet = (q.min_scaled_jacobian < 0.3 ? 1 : 0) + (q.angle_dev_mean > 5.0 ? 1 : 0);
-  return {topology ? 0 : 1, q.inverted,
+  const double jacobian = min_scaled_jacobian(r.quads);
+  const int unmet = (jacobian < 0.3 ? 1 : 0) + (q.angle_dev_mean > 5.0 ? 1 : 0);
+  return {topology ? 0 : 1, q.inverted + q.flipped,
           r.extraction.incomplete_cells + r.extraction.degenerate_cells + r.stray_boundary_points, unmet,
-          -q.min_scaled_jacobian};
+          -jacobian};
 }
 
 /// The loops of H_1(S) whose periods the quantization rounds (forms/named_loops.h).

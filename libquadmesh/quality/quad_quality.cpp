@@ -184,42 +184,67 @@ double corner_angle_deg(const Vec3& prev, const Vec3& p, const Vec3& next) {
   return angle_between_deg(next - p, prev - p);
 }
 
-double quad_warp_deg(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  const double along_ac = angle_between_deg((b - a).cross(c - a), (c - a).cross(d - a));
-  const double along_bd = angle_between_deg((c - b).cross(d - b), (d - b).cross(a - b));
-  return std::max(along_ac, along_bd);
+double sound_scaled_jacobian(const QuadPoints& corners, const std::array<Vec3, 4>& normals) {
+  double worst = quad_scaled_jacobian(corners);
+  for (std::size_t k = 0; k < 4; ++k)
+    worst = std::min(worst, corner_scaled_jacobian(corners[(k + 3) % 4], corners[k], corners[(k + 1) % 4], normals[k]));
+  return worst;
+}
+
+namespace {
+
+/// The unit vertex normals at the corners of a quad, the quad's own (diagonal)
+/// normal standing in at a point without one.
+std::array<Vec3, 4> corner_normals(const QuadPoints& c, const std::array<int, 4>& ids,
+                                   const std::vector<Vec3>& normals) {
+  const Vec3 own = (c[2] - c[0]).cross(c[3] - c[1]);
+  const Vec3 own_normal = own.norm() > 0 ? Vec3(own.normalized()) : Vec3::Zero();
+  std::array<Vec3, 4> n;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const Vec3& vn = normals[static_cast<std::size_t>(ids[k])];
+    n[k] = vn.squaredNorm() > 0 ? vn : own_normal;
+  }
+  return n;
+}
+
+QuadPoints quad_points(const PolygonMesh& mesh, const std::vector<int>& face) {
+  QuadPoints c;
+  for (std::size_t k = 0; k < 4; ++k) c[k] = mesh.points[static_cast<std::size_t>(face[k])];
+  return c;
+}
+
+std::array<int, 4> quad_ids(const std::vector<int>& face) { return {face[0], face[1], face[2], face[3]}; }
+
+}  // namespace
+
+std::vector<double> sound_scaled_jacobians(const PolygonMesh& mesh) {
+  const std::vector<Vec3> normals = vertex_normals(mesh);
+  std::vector<double> out;
+  for (const std::vector<int>& face : mesh.faces) {
+    if (face.size() != 4) continue;
+    const QuadPoints c = quad_points(mesh, face);
+    out.push_back(sound_scaled_jacobian(c, corner_normals(c, quad_ids(face), normals)));
+  }
+  return out;
 }
 
 QuadShapeSamples quad_shape_samples(const PolygonMesh& mesh) {
   QuadShapeSamples s;
-  const auto point = [&](int v) -> const Vec3& { return mesh.points[static_cast<std::size_t>(v)]; };
   const std::vector<Vec3> normals = vertex_normals(mesh);
   for (const std::vector<int>& face : mesh.faces) {
     if (face.size() != 4) continue;
-    const Vec3& p0 = point(face[0]);
-    const Vec3& p1 = point(face[1]);
-    const Vec3& p2 = point(face[2]);
-    const Vec3& p3 = point(face[3]);
-    const Vec3 own = (p2 - p0).cross(p3 - p1);
-    const Vec3 own_normal = own.norm() > 0 ? Vec3(own.normalized()) : Vec3::Zero();
-    double jacobian = std::numeric_limits<double>::infinity();
-    double shortest = std::numeric_limits<double>::infinity(), longest = 0;
-    for (int c = 0; c < 4; ++c) {
-      const Vec3& prev = point(face[static_cast<std::size_t>((c + 3) % 4)]);
-      const Vec3& p = point(face[static_cast<std::size_t>(c)]);
-      const Vec3& next = point(face[static_cast<std::size_t>((c + 1) % 4)]);
-      const Vec3& vn = normals[static_cast<std::size_t>(face[static_cast<std::size_t>(c)])];
-      const Vec3& n = vn.squaredNorm() > 0 ? vn : own_normal;
-      jacobian = std::min(jacobian, corner_scaled_jacobian(prev, p, next, n));
-      s.angle_deviation_deg.push_back(std::abs(corner_angle_deg(prev, p, next) - 90.0));
-      const double length = (next - p).norm();
-      shortest = std::min(shortest, length);
-      longest = std::max(longest, length);
+    const QuadPoints c = quad_points(mesh, face);
+    const std::array<Vec3, 4> n = corner_normals(c, quad_ids(face), normals);
+    double consistency = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < 4; ++k) {
+      const Vec3& prev = c[(k + 3) % 4];
+      const Vec3& next = c[(k + 1) % 4];
+      consistency = std::min(consistency, corner_scaled_jacobian(prev, c[k], next, n[k]));
+      s.angle_deviation_deg.push_back(std::abs(corner_angle_deg(prev, c[k], next) - 90.0));
     }
-    s.scaled_jacobian.push_back(jacobian);
-    s.aspect_ratio.push_back(shortest > 0 ? longest / shortest
-                                          : std::numeric_limits<double>::infinity());
-    s.warp_deg.push_back(quad_warp_deg(p0, p1, p2, p3));
+    s.verdict.push_back(quad_verdict(c));
+    s.scaled_jacobian.push_back(s.verdict.back().scaled_jacobian);
+    s.normal_consistency.push_back(consistency);
   }
   return s;
 }
@@ -244,17 +269,38 @@ QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference)
   }
   const auto point = [&](int v) -> const Vec3& { return mesh.points[static_cast<std::size_t>(v)]; };
 
-  // ---- per quad: scaled Jacobian, corner angles, aspect ratio, warp
+  // ---- per quad: Verdict figures, normal consistency, corner angles
   const QuadShapeSamples samples = quad_shape_samples(mesh);
+  const auto figure = [&](double QuadVerdict::*field) {
+    std::vector<double> values;
+    values.reserve(samples.verdict.size());
+    for (const QuadVerdict& v : samples.verdict) values.push_back(v.*field);
+    return values;
+  };
   const std::vector<double>& jacobians = samples.scaled_jacobian;
   const std::vector<double>& angle_devs = samples.angle_deviation_deg;
-  const std::vector<double>& aspects = samples.aspect_ratio;
-  const std::vector<double>& warps = samples.warp_deg;
   for (double jacobian : jacobians)
     if (jacobian <= 0) ++q.inverted;
+  for (double consistency : samples.normal_consistency)
+    if (consistency <= 0) ++q.flipped;
   q.min_scaled_jacobian = min_of(jacobians);
   q.mean_scaled_jacobian = mean(jacobians);
   q.p01_scaled_jacobian = percentile(jacobians, 0.01);
+  q.min_normal_consistency = min_of(samples.normal_consistency);
+  q.min_angle = min_of(figure(&QuadVerdict::minimum_angle));
+  q.max_angle = max_of(figure(&QuadVerdict::maximum_angle));
+  const std::vector<double> warpages = figure(&QuadVerdict::warpage);
+  q.min_warpage = min_of(warpages);
+  q.mean_warpage = mean(warpages);
+  const std::vector<double> aspects = figure(&QuadVerdict::aspect_ratio);
+  q.aspect_ratio_mean = mean(aspects);
+  q.aspect_ratio_max = max_of(aspects);
+  const std::vector<double> skews = figure(&QuadVerdict::skew);
+  q.skew_mean = mean(skews);
+  q.skew_max = max_of(skews);
+  const std::vector<double> tapers = figure(&QuadVerdict::taper);
+  q.taper_mean = mean(tapers);
+  q.taper_max = max_of(tapers);
   q.angle_dev_mean = mean(angle_devs);
   double squares = 0;
   for (double d : angle_devs)
@@ -263,10 +309,20 @@ QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference)
       angle_devs.empty() ? kNaN : std::sqrt(squares / static_cast<double>(angle_devs.size()));
   q.angle_dev_p99 = percentile(angle_devs, 0.99);
   q.angle_dev_max = max_of(angle_devs);
-  q.aspect_ratio_mean = mean(aspects);
-  q.aspect_ratio_max = max_of(aspects);
-  q.warp_mean = mean(warps);
-  q.warp_max = max_of(warps);
+
+  // ---- per triangle: Verdict figures
+  std::vector<TriangleVerdict> triangle_figures;
+  for (const std::vector<int>& face : mesh.faces)
+    if (face.size() == 3) triangle_figures.push_back(triangle_verdict({point(face[0]), point(face[1]), point(face[2])}));
+  const auto triangle_figure = [&](double TriangleVerdict::*field) {
+    std::vector<double> values;
+    for (const TriangleVerdict& v : triangle_figures) values.push_back(v.*field);
+    return values;
+  };
+  q.triangle_min_scaled_jacobian = min_of(triangle_figure(&TriangleVerdict::scaled_jacobian));
+  q.triangle_min_angle = min_of(triangle_figure(&TriangleVerdict::minimum_angle));
+  q.triangle_max_angle = max_of(triangle_figure(&TriangleVerdict::maximum_angle));
+  q.triangle_aspect_ratio_max = max_of(triangle_figure(&TriangleVerdict::aspect_ratio));
 
   // ---- edges, fans, topology
   const EdgeTable table = build_edges(mesh, first_corner);

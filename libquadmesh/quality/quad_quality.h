@@ -1,15 +1,20 @@
 // Quality of a quad (or quad-dominant) mesh: what every result reports
-// (method.md section 10). Shape per quad (scaled Jacobian, corner angles, aspect
-// ratio, warp), valences against the regular grid, topology checks, edge lengths,
-// alignment with the boundary and the two-sided Hausdorff distance to the input.
+// (method.md section 10). Shape per quad and per triangle by Verdict's definitions
+// (verdict.h: scaled Jacobian, angles, warpage, aspect ratio, skew, taper), the
+// normal consistency that Verdict cannot see (a quad turned over against its
+// neighbours), corner angle deviations, valences against the regular grid,
+// topology checks, edge lengths, alignment with the boundary and the two-sided
+// Hausdorff distance to the input.
 //
 // Conventions: faces are listed counterclockwise seen from the front, so the
-// scaled Jacobian of a well-shaped quad is positive with respect to the vertex
+// normal consistency of a well-shaped quad is positive with respect to the vertex
 // normals; angles are in degrees; statistics over an empty set are NaN.
 #pragma once
 
 #include "libquadmesh/core/triangle_soup.h"
+#include "libquadmesh/quality/verdict.h"
 
+#include <array>
 #include <cstddef>
 #include <map>
 #include <vector>
@@ -31,24 +36,42 @@ struct QuadQuality {
   std::size_t quads = 0;        ///< faces with 4 corners
   std::size_t triangles = 0;    ///< faces with 3 corners
   std::size_t other_faces = 0;  ///< faces with more than 4 corners
-  std::size_t inverted = 0;     ///< quads whose min scaled Jacobian is <= 0
+  std::size_t inverted = 0;     ///< quads whose Verdict scaled Jacobian is <= 0
+  std::size_t flipped = 0;      ///< quads turned over against their neighbours (normal
+                                ///< consistency <= 0), which Verdict cannot see
 
-  // scaled Jacobian of quads (min over the 4 corners of each quad)
-  double min_scaled_jacobian = 0;   ///< smallest over the quads (1 = square, <= 0 = inverted)
+  // Verdict figures of the quads (verdict.h): worst, mean and percentiles over the quads
+  double min_scaled_jacobian = 0;   ///< smallest Verdict scaled Jacobian (1 = rectangle, <= 0 = inverted)
   double mean_scaled_jacobian = 0;  ///< mean over the quads
   double p01_scaled_jacobian = 0;   ///< 1st percentile over the quads
+  double min_angle = 0;             ///< smallest Verdict minimum angle, degrees
+  double max_angle = 0;             ///< largest Verdict maximum angle, degrees
+  double min_warpage = 0;           ///< smallest Verdict warpage (1 = planar, <= 0 = folded)
+  double mean_warpage = 0;          ///< mean Verdict warpage
+  double aspect_ratio_mean = 0;     ///< mean Verdict aspect ratio (1 = square)
+  double aspect_ratio_max = 0;      ///< largest Verdict aspect ratio
+  double skew_mean = 0;             ///< mean Verdict skew (0 = orthogonal axes)
+  double skew_max = 0;              ///< largest Verdict skew
+  double taper_mean = 0;            ///< mean Verdict taper (0 = parallelogram)
+  double taper_max = 0;             ///< largest Verdict taper
 
-  // deviation |angle - 90| of the quad corner angles, degrees
+  /// Smallest normal consistency over the quads: the corner scaled Jacobian
+  /// against the mesh's vertex normals (corner_scaled_jacobian), <= 0 for a quad
+  /// turned over against its neighbours. Not a Verdict figure.
+  double min_normal_consistency = 0;
+
+  // Verdict figures of the triangles left in the mesh (NaN without triangles)
+  double triangle_min_scaled_jacobian = 0;  ///< smallest (no sign in 3D: [0, 1])
+  double triangle_min_angle = 0;            ///< smallest angle, degrees
+  double triangle_max_angle = 0;            ///< largest angle, degrees
+  double triangle_aspect_ratio_max = 0;     ///< largest aspect ratio (1 = equilateral)
+
+  // deviation |angle - 90| of the quad corner angles, degrees (not a Verdict figure:
+  // what method.md section 10 asks of a quad mesh)
   double angle_dev_mean = 0;  ///< mean over all quad corners
   double angle_dev_rms = 0;   ///< root mean square over all quad corners
   double angle_dev_p99 = 0;   ///< 99th percentile over all quad corners
   double angle_dev_max = 0;   ///< largest over all quad corners
-
-  // shape of quads
-  double aspect_ratio_mean = 0;  ///< mean of longest / shortest edge per quad
-  double aspect_ratio_max = 0;   ///< largest longest / shortest edge (inf for a zero edge)
-  double warp_mean = 0;          ///< mean warp per quad, degrees (0 = planar)
-  double warp_max = 0;           ///< largest warp, degrees
 
   // valences
   std::map<int, std::size_t> valence_interior;  ///< edges at an interior vertex -> vertex count
@@ -84,16 +107,25 @@ struct QuadQuality {
 /// one entry per quad (in face order) or per quad corner. Triangles and larger
 /// faces are skipped.
 struct QuadShapeSamples {
-  std::vector<double> scaled_jacobian;      ///< per quad: min over its corners (<= 0: inverted)
-  std::vector<double> angle_deviation_deg;  ///< per quad corner: |angle - 90|, degrees
-  std::vector<double> aspect_ratio;         ///< per quad: longest / shortest edge
-  std::vector<double> warp_deg;             ///< per quad: quad_warp_deg
+  std::vector<QuadVerdict> verdict;          ///< per quad: its Verdict figures
+  std::vector<double> scaled_jacobian;       ///< per quad: Verdict scaled Jacobian (<= 0: inverted)
+  std::vector<double> normal_consistency;    ///< per quad: min corner scaled Jacobian against the vertex normals
+  std::vector<double> angle_deviation_deg;   ///< per quad corner: |angle - 90|, degrees
 };
 
-/// The scaled Jacobians (w.r.t. the vertex normals, falling back to the quad's own
-/// normal at points without one), corner angle deviations, aspect ratios and warps
-/// of the quads of `mesh`, exactly as quad_quality measures them.
+/// The Verdict figures, normal consistencies and corner angle deviations of the
+/// quads of `mesh`, exactly as quad_quality measures them.
 QuadShapeSamples quad_shape_samples(const PolygonMesh& mesh);
+
+/// What the pipeline holds every quad to: its Verdict scaled Jacobian, capped by
+/// its normal consistency (the smallest corner_scaled_jacobian against
+/// `normals`, the unit vertex normals at its corners), so that neither a warped
+/// quad nor one turned over against its neighbours passes. <= the Verdict figure.
+double sound_scaled_jacobian(const QuadPoints& corners, const std::array<Vec3, 4>& normals);
+
+/// sound_scaled_jacobian of every quad of `mesh` (in face order; triangles and
+/// larger faces skipped), with the mesh's own vertex normals.
+std::vector<double> sound_scaled_jacobians(const PolygonMesh& mesh);
 
 /// Measures `mesh` (faces CCW seen from the front; degenerate faces are measured,
 /// not rejected) and, when `reference` is not null, its two-sided Hausdorff
@@ -115,9 +147,5 @@ double corner_scaled_jacobian(const Vec3& prev, const Vec3& p, const Vec3& next,
 /// The angle at `p` between the edges to `prev` and `next`, in degrees in [0, 180]
 /// (0 if an edge has zero length).
 double corner_angle_deg(const Vec3& prev, const Vec3& p, const Vec3& next);
-
-/// Warp of the quad (a, b, c, d), degrees: the larger over both diagonals of the
-/// angle between the normals of the two triangles (0 = planar).
-double quad_warp_deg(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
 }  // namespace qm

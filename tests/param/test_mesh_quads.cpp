@@ -44,6 +44,7 @@ void check_result(const TriangleSoup& input, const QuadMeshResult& r, int chi, i
   CHECK(q.quads == r.quads.quads.size());
   CHECK(q.triangles == 0);
   CHECK(q.inverted == 0);
+  CHECK(q.flipped == 0);
   CHECK(q.manifold);
   CHECK(q.consistently_oriented);
   CHECK(q.euler_characteristic == chi);

@@ -55,7 +55,7 @@ TriangleSoup triangulated(const PolygonMesh& mesh, bool along_13) {
 
 }  // namespace
 
-TEST_CASE("corner helpers: scaled Jacobian, angle, warp") {
+TEST_CASE("corner helpers: scaled Jacobian, angle") {
   const Vec3 o(0, 0, 0), x(1, 0, 0), y(0, 2, 0), z(0, 0, 1);
   CHECK(corner_scaled_jacobian(y, o, x, z) == doctest::Approx(1.0).epsilon(1e-15));
   CHECK(corner_scaled_jacobian(y, o, x, -z) == doctest::Approx(-1.0).epsilon(1e-15));
@@ -66,11 +66,6 @@ TEST_CASE("corner helpers: scaled Jacobian, angle, warp") {
   CHECK(std::abs(corner_angle_deg(y, o, x) - 90.0) < 1e-12);
   CHECK(std::abs(corner_angle_deg(at60, o, x) - 60.0) < 1e-12);
   CHECK(std::abs(corner_angle_deg(-x, o, x) - 180.0) < 1e-12);
-
-  CHECK(quad_warp_deg({0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}) == 0.0);
-  // b and d lifted by h: both splits fold by acos((1 - 2h^2) / (1 + 2h^2)); h = 1/2 gives acos(1/3)
-  const double warp = quad_warp_deg({0, 0, 0}, {1, 0, 0.5}, {1, 1, 0}, {0, 1, 0.5});
-  CHECK(std::abs(warp - std::acos(1.0 / 3.0) * 180 / kPi) < 1e-9);
 }
 
 TEST_CASE("unit-square grid: perfect scores, a disk") {
@@ -81,16 +76,23 @@ TEST_CASE("unit-square grid: perfect scores, a disk") {
   CHECK(q.triangles == 0);
   CHECK(q.other_faces == 0);
   CHECK(q.inverted == 0);
+  CHECK(q.flipped == 0);
   CHECK(q.min_scaled_jacobian == doctest::Approx(1.0).epsilon(1e-15));
   CHECK(q.mean_scaled_jacobian == doctest::Approx(1.0).epsilon(1e-15));
   CHECK(q.p01_scaled_jacobian == doctest::Approx(1.0).epsilon(1e-15));
+  CHECK(q.min_normal_consistency == doctest::Approx(1.0).epsilon(1e-15));
+  CHECK(std::abs(q.min_angle - 90) < 1e-12);
+  CHECK(std::abs(q.max_angle - 90) < 1e-12);
+  CHECK(q.min_warpage == doctest::Approx(1.0).epsilon(1e-15));
+  CHECK(q.skew_max < 1e-15);
+  CHECK(q.taper_max < 1e-15);
+  CHECK(std::isnan(q.triangle_min_scaled_jacobian));
   CHECK(q.angle_dev_mean < 1e-12);
   CHECK(q.angle_dev_rms < 1e-12);
   CHECK(q.angle_dev_p99 < 1e-12);
   CHECK(q.angle_dev_max < 1e-12);
   CHECK(q.aspect_ratio_mean == doctest::Approx(1.0).epsilon(1e-15));
   CHECK(q.aspect_ratio_max == doctest::Approx(1.0).epsilon(1e-15));
-  CHECK(q.warp_max < 1e-12);
   CHECK(q.irregular_interior == 0);
   CHECK(q.irregular_boundary == 0);
   CHECK(q.valence_interior == std::map<int, std::size_t>{{4, (n - 1) * (m - 1)}});
@@ -110,7 +112,7 @@ TEST_CASE("unit-square grid: perfect scores, a disk") {
   CHECK(std::isnan(q.hausdorff_backward_rel));
 }
 
-TEST_CASE("grid sheared by an angle a: scaled Jacobian cos a, angle deviation a") {
+TEST_CASE("grid sheared by an angle a: scaled Jacobian cos a, angle deviation a, skew sin a") {
   for (const double a_deg : {5.0, 20.0, 45.0}) {
     CAPTURE(a_deg);
     const double a = a_deg * kPi / 180;
@@ -127,20 +129,30 @@ TEST_CASE("grid sheared by an angle a: scaled Jacobian cos a, angle deviation a"
     CHECK(std::abs(q.angle_dev_rms - a_deg) < 1e-9);
     CHECK(std::abs(q.angle_dev_p99 - a_deg) < 1e-9);
     CHECK(std::abs(q.angle_dev_max - a_deg) < 1e-9);
-    CHECK(std::abs(q.aspect_ratio_max - 1.0) < 1e-12);
+    // Verdict: longest edge * perimeter / (2 * twice the area) = 4 / (4 cos a)
+    CHECK(std::abs(q.aspect_ratio_max - 1 / std::cos(a)) < 1e-12);
+    CHECK(std::abs(q.skew_max - std::sin(a)) < 1e-12);
+    CHECK(q.taper_max < 1e-12);
+    CHECK(std::abs(q.min_angle - (90 - a_deg)) < 1e-9);
+    CHECK(std::abs(q.max_angle - (90 + a_deg)) < 1e-9);
     CHECK(q.irregular_interior == 0);
     // the slanted sides meet the bottom and top rows at 90 - a / 90 + a
     CHECK(std::abs(q.boundary_alignment_max - a_deg) < 1e-9);
   }
 }
 
-TEST_CASE("a quad with its corners reversed is inverted and breaks the orientation") {
+TEST_CASE("a quad with its corners reversed is flipped (not Verdict-inverted) and breaks the orientation") {
   PolygonMesh mesh = unit_grid(3, 3);
   std::vector<int>& middle = mesh.faces[4];  // the cell (1, 1): all its corners interior
   std::reverse(middle.begin(), middle.end());
   const QuadQuality q = quad_quality(mesh, nullptr);
-  CHECK(q.inverted == 1);
-  CHECK(q.min_scaled_jacobian == doctest::Approx(-1.0).epsilon(1e-15));
+  // Verdict measures a quad against its own normal: a square is a square
+  CHECK(q.inverted == 0);
+  CHECK(q.min_scaled_jacobian == doctest::Approx(1.0).epsilon(1e-15));
+  // against its neighbours it is turned over
+  CHECK(q.flipped == 1);
+  CHECK(q.min_normal_consistency == doctest::Approx(-1.0).epsilon(1e-15));
+  CHECK(sound_scaled_jacobians(mesh)[4] == doctest::Approx(-1.0).epsilon(1e-15));
   CHECK_FALSE(q.consistently_oriented);
   CHECK(q.manifold);
   CHECK(q.euler_characteristic == 1);
@@ -149,11 +161,11 @@ TEST_CASE("a quad with its corners reversed is inverted and breaks the orientati
   PolygonMesh corner = unit_grid(3, 3);
   std::reverse(corner.faces[0].begin(), corner.faces[0].end());
   const QuadQuality c = quad_quality(corner, nullptr);
-  CHECK(c.inverted >= 1);
+  CHECK(c.flipped >= 1);
   CHECK_FALSE(c.consistently_oriented);
 }
 
-TEST_CASE("cylinder: chi 0, two boundary loops, scaled Jacobian cos(pi / sectors)") {
+TEST_CASE("cylinder: chi 0, two boundary loops, planar rectangles, normal consistency cos(pi / sectors)") {
   const int sectors = 12, rings = 3;
   PolygonMesh mesh;
   for (int k = 0; k <= rings; ++k)
@@ -174,9 +186,11 @@ TEST_CASE("cylinder: chi 0, two boundary loops, scaled Jacobian cos(pi / sectors
   CHECK(q.irregular_boundary == 0);
   CHECK(q.valence_interior == std::map<int, std::size_t>{{4, (rings - 1) * sectors}});
   CHECK(q.valence_boundary == std::map<int, std::size_t>{{2, 2 * sectors}});
-  // vertex normals are radial, each quad's normal is radial at its middle
-  CHECK(std::abs(q.min_scaled_jacobian - std::cos(kPi / sectors)) < 1e-9);
-  CHECK(q.warp_max < 1e-9);
+  // every quad is a planar rectangle (Verdict: 1); the vertex normals are radial,
+  // each quad's normal is radial at its middle
+  CHECK(std::abs(q.min_scaled_jacobian - 1) < 1e-12);
+  CHECK(std::abs(q.min_warpage - 1) < 1e-12);
+  CHECK(std::abs(q.min_normal_consistency - std::cos(kPi / sectors)) < 1e-9);
   CHECK(q.boundary_alignment_max < 1e-9);
 }
 
@@ -201,7 +215,7 @@ TEST_CASE("a valence-3 / valence-5 pair: two irregular interior vertices") {
   CHECK(q.consistently_oriented);
 }
 
-TEST_CASE("cube: closed, chi 2, eight valence-3 vertices, scaled Jacobian 1/sqrt(3)") {
+TEST_CASE("cube: closed, chi 2, eight valence-3 vertices, normal consistency 1/sqrt(3)") {
   PolygonMesh cube;
   for (int k = 0; k < 8; ++k)
     cube.points.emplace_back(k & 1, (k >> 1) & 1, (k >> 2) & 1);
@@ -215,8 +229,9 @@ TEST_CASE("cube: closed, chi 2, eight valence-3 vertices, scaled Jacobian 1/sqrt
   CHECK(q.irregular_interior == 8);
   CHECK(q.valence_interior == std::map<int, std::size_t>{{3, 8}});
   CHECK(q.valence_boundary.empty());
-  // the vertex normal is the diagonal direction: (face normal) . n = 1 / sqrt(3)
-  CHECK(std::abs(q.min_scaled_jacobian - 1 / std::sqrt(3.0)) < 1e-12);
+  // squares (Verdict: 1); the vertex normal is the diagonal direction: (face normal) . n = 1 / sqrt(3)
+  CHECK(std::abs(q.min_scaled_jacobian - 1) < 1e-12);
+  CHECK(std::abs(q.min_normal_consistency - 1 / std::sqrt(3.0)) < 1e-12);
   CHECK(q.inverted == 0);
   CHECK(std::isnan(q.boundary_alignment_mean));
 }
@@ -242,6 +257,12 @@ TEST_CASE("mixed faces are counted; statistics are over quads") {
   CHECK(q.triangles == 1);
   CHECK(q.other_faces == 1);
   CHECK(q.min_scaled_jacobian == doctest::Approx(1.0).epsilon(1e-15));
+  // the triangle (1, 0), (2, 0.5), (1, 1): sides sqrt(5)/2, sqrt(5)/2, 1, twice its area 1
+  const double side = std::sqrt(5.0) / 2;
+  CHECK(std::abs(q.triangle_min_scaled_jacobian - 2 / std::sqrt(3.0) / (side * side)) < 1e-12);
+  CHECK(std::abs(q.triangle_min_angle - 2 * std::atan(0.5) * 180 / kPi) < 1e-12);
+  CHECK(std::abs(q.triangle_max_angle - std::atan(2.0) * 180 / kPi) < 1e-12);
+  CHECK(std::abs(q.triangle_aspect_ratio_max - std::sqrt(3.0) / 6 * side * (2 * side + 1)) < 1e-12);
   CHECK(q.euler_characteristic == 1);  // 8 - 10 + 3
   CHECK(q.boundary_loops == 1);
 }

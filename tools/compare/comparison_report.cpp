@@ -43,6 +43,14 @@ const std::vector<Metric>& metrics() {
        [](const QuadQuality& q) { return q.min_scaled_jacobian; }},
       {"mean SJ", "mean scaled Jacobian", Better::higher, "{:.3f}",
        [](const QuadQuality& q) { return q.mean_scaled_jacobian; }},
+      {"min angle", "min angle", Better::higher, "{:.1f}", [](const QuadQuality& q) { return q.min_angle; }, false},
+      {"max angle", "max angle", Better::lower, "{:.1f}", [](const QuadQuality& q) { return q.max_angle; }, false},
+      {"min warpage", "min warpage", Better::higher, "{:.3f}",
+       [](const QuadQuality& q) { return q.min_warpage; }, false},
+      {"max aspect", "max aspect ratio", Better::lower, "{:.2f}",
+       [](const QuadQuality& q) { return q.aspect_ratio_max; }, false},
+      {"max skew", "max skew", Better::lower, "{:.3f}", [](const QuadQuality& q) { return q.skew_max; }, false},
+      {"max taper", "max taper", Better::lower, "{:.3f}", [](const QuadQuality& q) { return q.taper_max; }, false},
       {"angle dev. mean", "mean angle deviation", Better::lower, "{:.2f}",
        [](const QuadQuality& q) { return q.angle_dev_mean; }},
       {"angle dev. p99", "99th-percentile angle deviation", Better::lower, "{:.2f}",
@@ -133,7 +141,8 @@ Json report_json(const ComparisonReport& r) {
       const Json all = quality_json(*run.quality);
       Json quality;
       for (const char* key : {"quads", "triangles", "inverted", "min_scaled_jacobian", "mean_scaled_jacobian",
-                              "angle_dev_mean", "angle_dev_p99", "irregular_vertices", "boundary_loops",
+                              "min_angle", "max_angle", "min_warpage", "aspect_ratio_max", "skew_max", "taper_max",
+                              "triangle_min_scaled_jacobian", "angle_dev_mean", "angle_dev_p99", "irregular_vertices", "boundary_loops",
                               "euler_characteristic", "hausdorff_rel", "edge_length_mean"})
         quality[key] = all[std::string(key) == "irregular_vertices" ? "irregular_interior" : key];
       m["quality"] = std::move(quality);
@@ -269,8 +278,11 @@ std::string report_markdown(const ComparisonReport& r) {
   }
   md +=
       "\n**Bold**: the best value of the rows with a mesh (for boundary loops and chi: equal to "
-      "the input's). SJ: scaled Jacobian of a quad (min over its corners; 1 = square, <= 0 = "
-      "inverted). Angle deviation: |corner angle - 90| in degrees over all quad corners. "
+      "the input's). Every shape figure of a quad is Verdict's (VTK's vtkMeshQuality, ParaView, "
+      "Cubit): SJ, its scaled Jacobian (min over its corners against the quad's own normal; 1 = "
+      "rectangle, <= 0 = inverted); min and max angle in degrees; warpage (1 = planar, <= 0 = "
+      "folded); aspect ratio (1 = square); skew (0 = orthogonal axes); taper (0 = parallelogram). "
+      "Angle deviation: |corner angle - 90| in degrees over all quad corners. "
       "Edge mean: mean edge length, to set against the target size. "
       "Irregular vertices: interior vertices with valence other than 4. Hausdorff: two-sided "
       "distance to the input triangulation / its bounding-box diagonal. Triangles are counted, "
@@ -330,7 +342,7 @@ std::string jacobian_histogram_svg(const ComparisonReport& r) {
   picture.title = fmt::format("Scaled Jacobian per quad ({})",
                               std::filesystem::path(r.input).filename().string());
   picture.x_label =
-      "min scaled Jacobian of the quad (1 = square; the first bin holds the inverted)";
+      "Verdict scaled Jacobian of the quad (1 = square; the first bin holds the inverted)";
   picture.y_label = "share of the quads (log scale)";
   picture.log_y = true;
   return histogram_picture(r, picture, [](const MethodRun& run) {

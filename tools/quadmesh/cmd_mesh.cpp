@@ -110,17 +110,18 @@ void warn_if_stray_boundary(const QuadMeshResult& r) {
 /// Inverted quads are written (the mesh is conforming) but a solver rejects them:
 /// one warning line on stderr, even with --quiet, naming the first.
 void warn_if_inverted(const MeshSummary& s, const QuadMeshResult& r) {
-  if (s.quality.inverted == 0) return;
-  const std::vector<double> jacobians = quad_shape_samples(polygon_mesh(r.quads)).scaled_jacobian;
+  if (s.quality.inverted + s.quality.flipped == 0) return;
+  const std::vector<double> jacobians = sound_scaled_jacobians(polygon_mesh(r.quads));
   const auto first = std::find_if(jacobians.begin(), jacobians.end(), [](double j) { return j <= 0; });
   if (first == jacobians.end()) return;
   Vec3 c = Vec3::Zero();
   for (int v : r.quads.quads[static_cast<std::size_t>(first - jacobians.begin())])
     c += r.quads.points[static_cast<std::size_t>(v)] / 4.0;
   fmt::print(stderr,
-             "quadmesh: warning: {} inverted quads (min scaled Jacobian {:.3g}), the first near ({:.6g}, {:.6g}, "
-             "{:.6g}); a solver will reject them: try another --size or --form\n",
-             s.quality.inverted, s.quality.min_scaled_jacobian, c.x(), c.y(), c.z());
+             "quadmesh: warning: {} inverted quads and {} turned over against their neighbours (min Verdict "
+             "scaled Jacobian {:.3g}), the first near ({:.6g}, {:.6g}, {:.6g}); a solver will reject them: try "
+             "another --size or --form\n",
+             s.quality.inverted, s.quality.flipped, s.quality.min_scaled_jacobian, c.x(), c.y(), c.z());
 }
 
 /// Quads farther from the input than the refinement's tolerance: where the form is

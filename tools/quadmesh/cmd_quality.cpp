@@ -40,9 +40,21 @@ std::string quality_text(const QuadQuality& q, bool with_reference) {
   };
   line("faces", fmt::format("{} quads, {} triangles, {} other; {} vertices", q.quads, q.triangles,
                             q.other_faces, q.vertices));
-  line("inverted quads", fmt::format("{}", q.inverted));
-  line("scaled Jacobian", fmt::format("min {}, mean {}, p1 {}", value(q.min_scaled_jacobian),
+  line("inverted quads", fmt::format("{} (Verdict scaled Jacobian <= 0), {} turned over against their neighbours",
+                                     q.inverted, q.flipped));
+  line("scaled Jacobian", fmt::format("min {}, mean {}, p1 {} (Verdict)", value(q.min_scaled_jacobian),
                                       value(q.mean_scaled_jacobian), value(q.p01_scaled_jacobian)));
+  line("angles", fmt::format("min {} deg, max {} deg (Verdict)", value(q.min_angle, "{:.1f}"),
+                             value(q.max_angle, "{:.1f}")));
+  line("warpage", fmt::format("min {}, mean {} (Verdict: 1 planar, <= 0 folded)", value(q.min_warpage),
+                              value(q.mean_warpage)));
+  line("aspect ratio", fmt::format("max {}, mean {} (Verdict)", value(q.aspect_ratio_max),
+                                   value(q.aspect_ratio_mean)));
+  line("skew, taper", fmt::format("max {}, {} (Verdict)", value(q.skew_max), value(q.taper_max)));
+  if (q.triangles > 0)
+    line("triangles", fmt::format("min scaled Jacobian {}, angles {}-{} deg, max aspect ratio {} (Verdict)",
+                                  value(q.triangle_min_scaled_jacobian), value(q.triangle_min_angle, "{:.1f}"),
+                                  value(q.triangle_max_angle, "{:.1f}"), value(q.triangle_aspect_ratio_max)));
   line("angle deviation", fmt::format("mean {} deg, p99 {} deg", value(q.angle_dev_mean, "{:.2f}"),
                                       value(q.angle_dev_p99, "{:.2f}")));
   line("irregular vertices",

@@ -187,11 +187,16 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
 
 void print_summary(const MeshSummary& s) {
   const QuadQuality& q = s.quality;
-  fmt::print("quads               {} ({} triangles, {} inverted)\n", q.quads, q.triangles, q.inverted);
+  fmt::print("quads               {} ({} triangles, {} inverted, {} flipped)\n", q.quads, q.triangles, q.inverted,
+             q.flipped);
   fmt::print("irregular vertices  {} interior (zeros predict {}), {} on the boundary ({} boundary zeros)\n",
              q.irregular_interior, s.expected_irregular_interior, q.irregular_boundary,
              s.expected_irregular_boundary);
-  fmt::print("scaled Jacobian     min {:.3f}, mean {:.3f}\n", q.min_scaled_jacobian, q.mean_scaled_jacobian);
+  fmt::print("scaled Jacobian     min {:.3f}, mean {:.3f} (Verdict)\n", q.min_scaled_jacobian,
+             q.mean_scaled_jacobian);
+  fmt::print("shape               angles {:.1f}-{:.1f} deg, min warpage {:.3f}, max aspect ratio {:.2f}, max skew "
+             "{:.3f}, max taper {:.3f} (Verdict)\n",
+             q.min_angle, q.max_angle, q.min_warpage, q.aspect_ratio_max, q.skew_max, q.taper_max);
   fmt::print("angle deviation     mean {:.2f} deg, p99 {:.2f} deg\n", q.angle_dev_mean, q.angle_dev_p99);
   fmt::print("topology            chi {} (input {}), {} boundary loops (input {})\n", q.euler_characteristic,
              s.input_euler_characteristic, q.boundary_loops, s.input_boundary_loops);
