@@ -27,7 +27,8 @@ struct DeviationRefinementOptions {
   /// of the largest deviation are split (one round at a time, within min_quads):
   /// what is left of a budget goes to the largest deviations. 0: none.
   std::size_t min_quads = 0;
-  /// A round may not take the smallest scaled Jacobian below this (or below its
+  /// A round may not take the smallest scaled Jacobian (sound_scaled_jacobian,
+  /// quad_quality.h: Verdict's, capped by the normal consistency) below this (or below its
   /// value before the refinement, when that is lower).
   double min_scaled_jacobian = 0.3;
 };

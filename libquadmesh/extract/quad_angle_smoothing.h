@@ -31,7 +31,9 @@ namespace qm {
 struct QuadAngleSmoothingOptions {
   int rounds = 4;               ///< sweeps over the points at most; one that moves nothing ends it
   double max_move = 0;          ///< no point ends farther than this from where it started (0: no limit)
-  double keep_jacobian = 0.5;   ///< a move may lower a quad's scaled Jacobian down to this, no further
+  /// A move may lower a quad's scaled Jacobian (sound_scaled_jacobian,
+  /// quad_quality.h: Verdict's, capped by the normal consistency) down to this, no further.
+  double keep_jacobian = 0.5;
   /// A quad's deviation from S may grow up to this (or stay where it was, if that
   /// was more); 0: no check.
   double max_deviation = 0;

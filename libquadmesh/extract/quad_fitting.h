@@ -20,8 +20,9 @@ namespace qm {
 
 struct QuadFittingOptions {
   double tolerance = 0;  ///< samples of S farther than this (absolute, > 0) from the quads pull corners
-  /// A move may not take the smallest corner scaled Jacobian of its quads below
-  /// this (or below its value before the move, when that is lower).
+  /// A move may not take the smallest sound_scaled_jacobian (quad_quality.h:
+  /// Verdict's, capped by the normal consistency) of its quads below this (or
+  /// below its value before the move, when that is lower).
   double min_scaled_jacobian = 0.35;
   int rounds = 8;  ///< at most; a round that moves nothing ends it
 };

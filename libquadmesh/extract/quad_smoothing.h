@@ -1,5 +1,6 @@
-// Smoothing of the worst quads (method.md section 10 measures the scaled Jacobian;
-// this improves it without touching the grid's structure).
+// Smoothing of the worst quads (method.md section 10 measures Verdict's scaled
+// Jacobian; this improves it, as sound_scaled_jacobian of quad_quality.h, without
+// touching the grid's structure).
 //
 // Beside an interior zero on a curved part, the 4(m + 1) quads around the
 // valence-4(m + 1) vertex are large and lean away from its normal; the lattice

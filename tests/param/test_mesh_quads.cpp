@@ -14,6 +14,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace qm;
@@ -363,7 +364,12 @@ TEST_CASE("bunny at 1.5%: smoothing the worst quads lifts the minimum scaled Jac
   CHECK(r.smoothing.min_after >= 0.3);
   CHECK(r.smoothing.moved_points > 0);
   const QuadQuality q = quad_quality(polygon_mesh(r.quads), nullptr);
-  CHECK(q.min_scaled_jacobian == doctest::Approx(r.smoothing.min_after));
+  // the fitting and the angle smoothing after it keep their quads' figure at
+  // min(before, 0.35 and 0.5): the smoothing's minimum (below 0.35) holds to the
+  // end, and Verdict's figure is at least the one the pipeline holds the quads to
+  const std::vector<double> sound = sound_scaled_jacobians(polygon_mesh(r.quads));
+  CHECK(*std::min_element(sound.begin(), sound.end()) >= std::min(r.smoothing.min_after, 0.35) - 1e-12);
+  CHECK(q.min_scaled_jacobian >= *std::min_element(sound.begin(), sound.end()));
   CHECK(q.inverted == 0);
   CHECK(q.euler_characteristic == -3);
   CHECK(q.boundary_loops == 5);

@@ -207,12 +207,15 @@ TEST_CASE("mesh: inverted quads are written, with one warning line that names th
                            " --size 1.2% --max-deviation off --no-smoothing -q");
   CHECK(run.status == 0);
   CHECK(std::filesystem::exists(output));
-  CHECK(run.out.find("inverted)") != std::string::npos);
+  // Verdict's inverted (a corner re-entrant against the quad's own normal) and
+  // turned over against the neighbours: one each here
+  CHECK(run.out.find(" 1 inverted, 1 flipped)") != std::string::npos);
   const auto lines = run.error_lines();
   REQUIRE(lines.size() == 1);
   CHECK(lines[0].rfind("quadmesh: warning: ", 0) == 0);
   CHECK(std::atoi(lines[0].c_str() + std::string("quadmesh: warning: ").size()) >= 1);
-  CHECK(lines[0].find(" inverted quads (min scaled Jacobian -") != std::string::npos);
+  CHECK(lines[0].find(" inverted quads and 1 turned over against their neighbours (min Verdict scaled Jacobian -") !=
+        std::string::npos);
   CHECK(lines[0].find("the first near (") != std::string::npos);
 }
 
