@@ -31,6 +31,21 @@ Applicability assess_applicability(const AnalyzedSurface& surface) {
     return bad(fmt::format("{} has a non-finite coordinate ({} such vertices)",
                            describe_vertex(soup, r.nonfinite_vertices.front()),
                            r.nonfinite_vertices.size()));
+  if (r.range.largest_magnitude > kMaxCoordinate)
+    return bad(fmt::format("{} has a coordinate of {:.3g}: quadmesh computes with coordinates up to {:.0e} "
+                           "in size; scale the model",
+                           describe_vertex(soup, r.range.largest_vertex), r.range.largest_magnitude,
+                           kMaxCoordinate));
+  if (r.range.largest_vertex >= 0 && r.range.diagonal < kMinModelSize)
+    return bad(fmt::format("the model is {:.3g} across (bounding-box diagonal): quadmesh computes with "
+                           "models at least {:.0e} across; scale the model",
+                           r.range.diagonal, kMinModelSize));
+  if (r.range.largest_magnitude > kMaxOffsetRatio * r.range.diagonal)
+    return bad(fmt::format("{} is {:.3g} from the origin, more than {:.0e} times the model's size ({:.3g}): "
+                           "its coordinates lose the digits of its edges there; move the model near the "
+                           "origin",
+                           describe_vertex(soup, r.range.largest_vertex), r.range.largest_magnitude,
+                           kMaxOffsetRatio, r.range.diagonal));
   if (!r.repeated_corner_faces.empty())
     return bad(fmt::format("{} uses a vertex twice ({} such triangles)",
                            describe_triangle(soup, r.repeated_corner_faces.front()),

@@ -43,6 +43,7 @@ AnalyzedSurface analyze_topology(TriangleSoup soup) {
   r.faces = soup.triangles.size();
 
   r.nonfinite_vertices = nonfinite_points(soup);
+  r.range = coordinate_range(soup);
   r.repeated_corner_faces = repeated_corner_triangles(soup);
   r.zero_area_faces = zero_area_triangles(soup);
   r.duplicate_faces = duplicate_triangles(soup);

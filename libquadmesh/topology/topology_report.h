@@ -5,6 +5,7 @@
 
 #include "libquadmesh/topology/boundary_loops.h"
 #include "libquadmesh/topology/components.h"
+#include "libquadmesh/topology/coordinate_range.h"
 #include "libquadmesh/topology/orientation.h"
 
 #include <vector>
@@ -24,6 +25,7 @@ struct TopologyReport {
   std::size_t vertices = 0, edges = 0, faces = 0;
 
   std::vector<int> nonfinite_vertices;    ///< NaN or infinite coordinates
+  CoordinateRange range;                  ///< the finite coordinates' extent (coordinate_range.h)
   std::vector<int> repeated_corner_faces; ///< a vertex used twice
   std::vector<int> zero_area_faces;       ///< three collinear vertices (exact test)
   std::vector<int> duplicate_faces;       ///< same vertex set as an earlier triangle

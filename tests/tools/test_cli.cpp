@@ -449,3 +449,37 @@ TEST_CASE("quality --json: counts and scaled Jacobian of a quad grid; a missing 
   REQUIRE(missing.error_lines().size() == 1);
   CHECK(missing.error_lines()[0].find("missing.obj: no such file") != std::string::npos);
 }
+
+TEST_CASE("mesh and info: coordinates out of the computable range are refused before any work") {
+  // the kitten scaled by 1e300 and by 1e-160, and moved 1e13 away: the first two
+  // died in the forms stage (or failed to factor) after `info` said "supported"
+  const std::string dir = test::scratch_dir("cli_coordinates");
+  struct Case {
+    const char* name;
+    double factor, shift;
+    const char* needle;
+  };
+  for (const Case& c : {Case{"huge", 1e300, 0, "has a coordinate of"}, Case{"tiny", 1e-160, 0, "across (bounding-box diagonal)"},
+                        Case{"far", 1, 1e13, "from the origin"}}) {
+    CAPTURE(c.name);
+    std::ifstream in(test::shared_mesh("kitten-2holes.obj"));
+    std::ofstream out(dir + "/" + c.name + ".obj");
+    out.precision(17);
+    for (std::string line; std::getline(in, line);) {
+      if (line.rfind("v ", 0) == 0) {
+        std::istringstream words(line.substr(2));
+        double x, y, z;
+        words >> x >> y >> z;
+        out << "v " << x * c.factor + c.shift << ' ' << y * c.factor << ' ' << z * c.factor << '\n';
+      } else {
+        out << line << '\n';
+      }
+    }
+    out.close();
+    const std::string input = dir + "/" + c.name + ".obj";
+    expect_refusal(input, 3, c.needle);
+    const Run info = quadmesh("info " + quoted(input));
+    CHECK(info.status == 3);
+    CHECK(info.out.find(c.needle) != std::string::npos);
+  }
+}

@@ -204,6 +204,35 @@ TEST_CASE("element defects: unreferenced, non-finite, repeated, duplicate, zero-
   CHECK(zero_area_triangles(flat) == std::vector<int>{8});
 }
 
+TEST_CASE("coordinates outside the range the method computes in are refused with their figures") {
+  const auto scaled = [](double factor, const Vec3& shift) {
+    TriangleSoup soup = test::annulus(1, 2, 2, 8);
+    for (Vec3& p : soup.points) p = p * factor + shift;
+    return soup;
+  };
+  // the same annulus from a micron to 1e9 units across, and 1e5 of its sizes away: supported
+  for (const double factor : {1e-6, 1.0, 1e9})
+    CHECK(assess_applicability(analyze(scaled(factor, Vec3(1e5 * factor, 0, 0)))).supported);
+  // a coordinate of 1e300 (the forms overflowed and the program died after `info` said supported)
+  Applicability a = assess_applicability(analyze(scaled(1e300, Vec3::Zero())));
+  CHECK(a.code == ErrorCode::bad_input);
+  CHECK(a.kind == SurfaceCase::invalid);
+  CHECK(a.reason.find("has a coordinate of 2e+300") != std::string::npos);
+  CHECK(a.reason.find("vertex ") == 0);
+  // 1e-160 across: the cotangent weights underflow
+  a = assess_applicability(analyze(scaled(1e-160, Vec3::Zero())));
+  CHECK(a.code == ErrorCode::bad_input);
+  CHECK(a.reason.find("the model is 5.66e-160 across") == 0);
+  // a 4-unit annulus 1e10 from the origin: 7 digits of its edges left
+  a = assess_applicability(analyze(scaled(1.0, Vec3(1e10, 0, 0))));
+  CHECK(a.code == ErrorCode::bad_input);
+  CHECK(a.reason.find("from the origin, more than 1e+09 times the model's size") != std::string::npos);
+  // the checks' own figures
+  const CoordinateRange r = coordinate_range(scaled(1.0, Vec3(0, 0, 3)));
+  CHECK(r.largest_magnitude == doctest::Approx(3.0));
+  CHECK(r.diagonal == doctest::Approx(std::sqrt(32.0)));
+}
+
 TEST_CASE("empty soup is bad input") {
   const Applicability a = assess_applicability(analyze(TriangleSoup{}));
   CHECK_FALSE(a.supported);
