@@ -239,8 +239,10 @@ DeviationRefinementReport refine_to_deviation(const TriangleSoup& surface,
   // that point can fall where the split quads turn over or get thin: a round that
   // turns a quad over, or takes the smallest scaled Jacobian below both its value
   // before the refinement and the usual 0.3 floor, is undone
-  auto [inverted, min_jacobian] = inverted_quads(quads);
-  const double jacobian_floor = std::min(min_jacobian, options.min_scaled_jacobian);
+  // (named variables, not a structured binding: a lambda below updates `inverted`)
+  const auto start = inverted_quads(quads);
+  auto inverted = start.first;
+  const double jacobian_floor = std::min(start.second, options.min_scaled_jacobian);
   // chords whose split was undone, as (quad, direction) of the current quads: a
   // round that fails is tried again with the chords of one quad at a time (the
   // worst), and chords that fail alone are left out until a split succeeds (the

@@ -292,15 +292,14 @@ QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference)
   const std::vector<double> warpages = figure(&QuadVerdict::warpage);
   q.min_warpage = min_of(warpages);
   q.mean_warpage = mean(warpages);
-  const std::vector<double> aspects = figure(&QuadVerdict::aspect_ratio);
-  q.aspect_ratio_mean = mean(aspects);
-  q.aspect_ratio_max = max_of(aspects);
-  const std::vector<double> skews = figure(&QuadVerdict::skew);
-  q.skew_mean = mean(skews);
-  q.skew_max = max_of(skews);
-  const std::vector<double> tapers = figure(&QuadVerdict::taper);
-  q.taper_mean = mean(tapers);
-  q.taper_max = max_of(tapers);
+  const auto mean_and_max = [&](double QuadVerdict::*field, double& mean_out, double& max_out) {
+    const std::vector<double> values = figure(field);
+    mean_out = mean(values);
+    max_out = max_of(values);
+  };
+  mean_and_max(&QuadVerdict::aspect_ratio, q.aspect_ratio_mean, q.aspect_ratio_max);
+  mean_and_max(&QuadVerdict::skew, q.skew_mean, q.skew_max);
+  mean_and_max(&QuadVerdict::taper, q.taper_mean, q.taper_max);
   q.angle_dev_mean = mean(angle_devs);
   double squares = 0;
   for (double d : angle_devs)
