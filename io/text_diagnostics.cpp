@@ -97,7 +97,7 @@ std::optional<std::string> diagnose_obj(const std::string& path) {
     ++line_no;
     const auto tokens = split_tokens(line);
     if (tokens.empty() || tokens[0][0] == '#') continue;
-    const std::string where = fmt::format("{}:{}", path, line_no);
+    const std::string where = fmt::format("{}: line {}", path, line_no);
     if (tokens[0] == "v") {
       if (auto problem = check_coordinates(where, tokens, 1)) return problem;
       ++vertices;
@@ -119,7 +119,7 @@ std::optional<std::string> diagnose_obj(const std::string& path) {
     return fmt::format("{}: no vertex ('v' line) found: not an OBJ file", path);
   for (const FaceRef& ref : forward)
     if (ref.index > vertices)
-      return fmt::format("{}:{}: face refers to vertex {}, but the file defines only {}", path,
+      return fmt::format("{}: line {}: face refers to vertex {}, but the file defines only {}", path,
                          ref.line, ref.index, vertices);
   return std::nullopt;
 }
@@ -132,7 +132,7 @@ std::optional<std::string> diagnose_off(const std::string& path) {
   auto tokens = split_tokens(line);
   const std::string& magic = tokens[0];
   if (magic.size() < 3 || magic.compare(magic.size() - 3, 3, "OFF") != 0)
-    return fmt::format("{}:{}: an OFF file starts with 'OFF', found '{}'", path, line_no,
+    return fmt::format("{}: line {}: an OFF file starts with 'OFF', found '{}'", path, line_no,
                        printable(magic, 20));
   tokens.erase(tokens.begin());
   if (tokens.empty()) {
@@ -143,11 +143,11 @@ std::optional<std::string> diagnose_off(const std::string& path) {
   long nv = 0, nf = 0;
   if (tokens.size() < 2 || !parse_integer(tokens[0], nv) || !parse_integer(tokens[1], nf) ||
       nv < 0 || nf < 0)
-    return fmt::format("{}:{}: expected the counts 'vertices faces edges'", path, line_no);
+    return fmt::format("{}: line {}: expected the counts 'vertices faces edges'", path, line_no);
   for (long v = 0; v < nv; ++v) {
     if (!next_content_line(in, line, line_no))
       return fmt::format("{}: the file ends after {} of {} vertices (truncated?)", path, v, nv);
-    if (auto problem = check_coordinates(fmt::format("{}:{}", path, line_no), split_tokens(line), 0))
+    if (auto problem = check_coordinates(fmt::format("{}: line {}", path, line_no), split_tokens(line), 0))
       return problem;
   }
   for (long f = 0; f < nf; ++f) {
@@ -156,11 +156,11 @@ std::optional<std::string> diagnose_off(const std::string& path) {
     tokens = split_tokens(line);
     long k = 0;
     if (!parse_integer(tokens[0], k) || k < 3 || static_cast<long>(tokens.size()) < k + 1)
-      return fmt::format("{}:{}: expected a face 'n i1 ... in' with n >= 3", path, line_no);
+      return fmt::format("{}: line {}: expected a face 'n i1 ... in' with n >= 3", path, line_no);
     for (long i = 1; i <= k; ++i) {
       long index = 0;
       if (!parse_integer(tokens[i], index) || index < 0 || index >= nv)
-        return fmt::format("{}:{}: vertex index '{}' is not in 0..{}", path, line_no,
+        return fmt::format("{}: line {}: vertex index '{}' is not in 0..{}", path, line_no,
                            printable(tokens[i]), nv - 1);
     }
   }
@@ -172,7 +172,7 @@ std::optional<std::string> diagnose_ply(const std::string& path) {
   std::string line;
   std::getline(in, line);
   if (line.rfind("ply", 0) != 0)
-    return fmt::format("{}:1: a PLY file starts with 'ply', found '{}'", path, printable(line, 20));
+    return fmt::format("{}: line 1: a PLY file starts with 'ply', found '{}'", path, printable(line, 20));
   long line_no = 1;
   while (std::getline(in, line)) {
     ++line_no;
@@ -210,7 +210,7 @@ std::optional<std::string> diagnose_stl(const std::string& path) {
     ++line_no;
     const auto tokens = split_tokens(line);
     if (tokens.empty()) continue;
-    const std::string where = fmt::format("{}:{}", path, line_no);
+    const std::string where = fmt::format("{}: line {}", path, line_no);
     if (tokens[0] == "vertex") {
       if (auto problem = check_coordinates(where, tokens, 1)) return problem;
       ++corners;
@@ -236,12 +236,12 @@ std::optional<std::string> diagnose_msh(const std::string& path) {
     while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
     if (line.rfind("$End", 0) == 0) {
       if (line.substr(4) != open_section)
-        return fmt::format("{}:{}: '{}' does not close '${}'", path, line_no, printable(line),
+        return fmt::format("{}: line {}: '{}' does not close '${}'", path, line_no, printable(line),
                            open_section);
       open_section.clear();
     } else {
       if (!open_section.empty())
-        return fmt::format("{}:{}: section '${}' opened at line {} is not closed", path, line_no,
+        return fmt::format("{}: line {}: section '${}' opened at line {} is not closed", path, line_no,
                            open_section, open_line);
       open_section = line.substr(1);
       open_line = line_no;
