@@ -1,11 +1,13 @@
 #include "io/text_diagnostics.h"
-#include <filesystem>
+
+#include "io/text_check.h"
 #include "libquadmesh/core/error.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -202,6 +204,7 @@ std::optional<std::string> diagnose_stl(const std::string& path) {
         "(truncated or not STL)",
         path, count, 84 + 50 * static_cast<std::uint64_t>(count), bytes.size());
   }
+  if (auto problem = check_text(path)) return problem;
   std::istringstream text(bytes);
   std::string line;
   long line_no = 0, corners = 0;
@@ -257,20 +260,51 @@ std::optional<std::string> diagnose_msh(const std::string& path) {
 
 namespace {
 
-bool ascii_msh(const std::string& path) {
-  std::ifstream in(path);
-  std::string magic, version, file_type;
-  return (in >> magic >> version >> file_type) && magic == "$MeshFormat" && file_type == "0";
+/// A binary MSH file: "$MeshFormat" then "version 1 data-size". Reads at most
+/// two short lines: a file of binary garbage has no line end to stop at.
+bool binary_msh(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(128, '\0');
+  in.read(&head[0], static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  std::istringstream lines(head);
+  std::string magic, format;
+  std::getline(lines, magic);
+  std::getline(lines, format);
+  if (!magic.empty() && magic.back() == '\r') magic.pop_back();
+  const auto tokens = split_tokens(format);
+  return magic == "$MeshFormat" && tokens.size() == 3 && tokens[1] == "1";
 }
 
+/// Text formats are checked for being text first: the line scanners and the
+/// libraries' readers read "a line" of binary garbage as the whole file.
 std::optional<std::string> diagnose(const std::string& path, Format format) {
   switch (format) {
-    case Format::obj: return diagnose_obj(path);
-    case Format::off: return diagnose_off(path);
-    case Format::ply: return diagnose_ply(path);
-    case Format::stl: return diagnose_stl(path);
-    case Format::msh: return ascii_msh(path) ? diagnose_msh(path) : std::nullopt;
+    case Format::obj:
+      if (auto problem = check_text(path)) return problem;
+      return diagnose_obj(path);
+    case Format::off:
+      if (auto problem = check_text(path)) return problem;
+      return diagnose_off(path);
+    case Format::ply: return diagnose_ply(path);  // text header, then text or binary
+    case Format::stl: return diagnose_stl(path);  // binary, or text
+    case Format::msh:
+      if (binary_msh(path)) return std::nullopt;
+      if (auto problem = check_text(path)) return problem;
+      return diagnose_msh(path);
     default: return std::nullopt;
+  }
+}
+
+/// What a path that is not a regular file is, for the message.
+std::string file_kind(std::filesystem::file_type type) {
+  switch (type) {
+    case std::filesystem::file_type::directory: return "a directory";
+    case std::filesystem::file_type::fifo: return "a FIFO (named pipe)";
+    case std::filesystem::file_type::character: return "a character device";
+    case std::filesystem::file_type::block: return "a block device";
+    case std::filesystem::file_type::socket: return "a socket";
+    default: return "not a regular file";
   }
 }
 
@@ -281,8 +315,13 @@ std::optional<std::string> diagnose(const std::string& path, Format format) {
 Format check_input_file(const std::string& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (!fs::exists(path, ec)) refuse(fmt::format("{}: no such file", path));
-  if (fs::is_directory(path, ec)) refuse(fmt::format("{}: is a directory, not a mesh file", path));
+  // Only regular files: a FIFO blocks the reader forever, and a device such as
+  // /dev/zero or /dev/urandom never ends. Symbolic links to a regular file are fine.
+  const fs::file_status status = fs::status(path, ec);
+  if (status.type() == fs::file_type::not_found) refuse(fmt::format("{}: no such file", path));
+  if (ec) refuse(fmt::format("{}: cannot open the file for reading ({})", path, ec.message()));
+  if (!fs::is_regular_file(status))
+    refuse(fmt::format("{}: is {}, not a mesh file", path, file_kind(status.type())));
   if (fs::file_size(path, ec) == 0) refuse(fmt::format("{}: empty file", path));
   if (!std::ifstream(path).good()) refuse(fmt::format("{}: cannot open the file for reading", path));
   const Format format = format_of(path);
