@@ -1,11 +1,14 @@
 #include "io/text_diagnostics.h"
 
+#include "io/ply_data.h"
+#include "io/ply_header.h"
 #include "io/text_check.h"
 #include "libquadmesh/core/error.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -171,16 +174,14 @@ std::optional<std::string> diagnose_off(const std::string& path) {
 
 std::optional<std::string> diagnose_ply(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  std::string line;
-  std::getline(in, line);
-  if (line.rfind("ply", 0) != 0)
-    return fmt::format("{}: line 1: a PLY file starts with 'ply', found '{}'", path, printable(line, 20));
-  long line_no = 1;
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (line.rfind("end_header", 0) == 0) return std::nullopt;
-  }
-  return fmt::format("{}: the PLY header has no 'end_header' (truncated?)", path);
+  PlyHeader header;
+  if (auto problem = read_ply_header(in, path, header)) return problem;
+  if (header.encoding == PlyEncoding::ascii)
+    if (auto problem = check_text(path)) return problem;
+  const auto offset = static_cast<std::uint64_t>(in.tellg());
+  std::error_code ec;
+  const std::uint64_t size = std::filesystem::file_size(path, ec);
+  return check_ply_data(in, path, header, size > offset ? size - offset : 0);
 }
 
 std::optional<std::string> diagnose_stl(const std::string& path) {
