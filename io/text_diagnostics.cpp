@@ -1,5 +1,6 @@
 #include "io/text_diagnostics.h"
 
+#include "io/msh_counts.h"
 #include "io/ply_data.h"
 #include "io/ply_header.h"
 #include "io/text_check.h"
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -169,6 +171,10 @@ std::optional<std::string> diagnose_off(const std::string& path) {
                            printable(tokens[i]), nv - 1);
     }
   }
+  // CGAL stops after the declared faces: more would be dropped without a word
+  if (next_content_line(in, line, line_no))
+    return fmt::format("{}: line {}: data after the {} faces the header declares (is the face "
+                       "count too small?)", path, line_no, nf);
   return std::nullopt;
 }
 
@@ -184,29 +190,62 @@ std::optional<std::string> diagnose_ply(const std::string& path) {
   return check_ply_data(in, path, header, size > offset ? size - offset : 0);
 }
 
-std::optional<std::string> diagnose_stl(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (bytes.empty()) return fmt::format("{}: empty file", path);
-  if (bytes.size() >= 84) {
-    std::uint32_t count = 0;
-    for (int i = 3; i >= 0; --i) count = (count << 8) | static_cast<unsigned char>(bytes[80 + i]);
-    if (84 + 50 * static_cast<std::uint64_t>(count) == bytes.size()) return std::nullopt;
+namespace {
+
+std::uint32_t little_endian_u32(const char* bytes) {
+  std::uint32_t value = 0;
+  for (int i = 3; i >= 0; --i) value = (value << 8) | static_cast<unsigned char>(bytes[i]);
+  return value;
+}
+
+/// The corners of every triangle of a binary STL (whose size matched its count)
+/// are finite: Gmsh's reader drops a NaN corner and its triangles without a word.
+std::optional<std::string> check_binary_stl(std::istream& in, const std::string& path,
+                                            std::uint32_t count) {
+  char record[50];
+  for (std::uint32_t t = 0; t < count; ++t) {
+    if (!in.read(record, sizeof record))
+      return fmt::format("{}: the file ends in triangle {} of {} (truncated?)", path, t + 1, count);
+    for (int c = 0; c < 9; ++c) {  // after the 12-byte normal, 3 corners of 3 floats
+      const std::uint32_t bits = little_endian_u32(record + 12 + 4 * c);
+      float value;
+      std::memcpy(&value, &bits, sizeof value);
+      if (!std::isfinite(value))
+        return fmt::format("{}: triangle {} of {}: corner {} has a coordinate that is not a finite "
+                           "number ({})",
+                           path, t + 1, count, c / 3 + 1, value);
+    }
   }
-  const auto start = bytes.find_first_not_of(" \t\r\n");
-  if (start == std::string::npos || bytes.compare(start, 5, "solid") != 0) {
-    if (bytes.size() < 84)
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> diagnose_stl(const std::string& path) {
+  std::error_code ec;
+  const std::uint64_t size = std::filesystem::file_size(path, ec);
+  if (size == 0) return fmt::format("{}: empty file", path);
+  std::ifstream in(path, std::ios::binary);
+  std::string head(84, '\0');
+  in.read(&head[0], 84);
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  // Binary STL: an 80-byte header, a triangle count, 50 bytes per triangle,
+  // exactly; the first bytes of the header may say "solid" all the same.
+  const std::uint64_t count = head.size() == 84 ? little_endian_u32(&head[80]) : 0;
+  if (head.size() == 84 && 84 + 50 * count == size)
+    return check_binary_stl(in, path, static_cast<std::uint32_t>(count));
+  const auto start = head.find_first_not_of(" \t\r\n");
+  if (start == std::string::npos || head.compare(start, 5, "solid") != 0) {
+    if (head.size() < 84)
       return fmt::format("{}: {} bytes is too short for a binary STL and it is not ASCII STL",
-                         path, bytes.size());
-    std::uint32_t count = 0;
-    for (int i = 3; i >= 0; --i) count = (count << 8) | static_cast<unsigned char>(bytes[80 + i]);
+                         path, size);
     return fmt::format(
         "{}: binary STL header announces {} triangles ({} bytes) but the file has {} bytes "
         "(truncated or not STL)",
-        path, count, 84 + 50 * static_cast<std::uint64_t>(count), bytes.size());
+        path, count, 84 + 50 * count, size);
   }
   if (auto problem = check_text(path)) return problem;
-  std::istringstream text(bytes);
+  std::ifstream text(path);
   std::string line;
   long line_no = 0, corners = 0;
   bool ended = false;
@@ -290,9 +329,10 @@ std::optional<std::string> diagnose(const std::string& path, Format format) {
     case Format::ply: return diagnose_ply(path);  // text header, then text or binary
     case Format::stl: return diagnose_stl(path);  // binary, or text
     case Format::msh:
-      if (binary_msh(path)) return std::nullopt;
+      if (binary_msh(path)) return check_binary_msh_counts(path);
       if (auto problem = check_text(path)) return problem;
-      return diagnose_msh(path);
+      if (auto problem = diagnose_msh(path)) return problem;
+      return check_msh_counts(path);
     default: return std::nullopt;
   }
 }

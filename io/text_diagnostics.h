@@ -25,7 +25,8 @@ std::optional<std::string> diagnose_off(const std::string& path);
 /// PLY: the header line by line (ply_header.h), then every count, list, index
 /// and coordinate of the data against it (ply_data.h).
 std::optional<std::string> diagnose_ply(const std::string& path);
-/// Binary size against the announced triangle count, or the ASCII structure.
+/// Binary: the size against the announced triangle count and every corner
+/// finite; ASCII: text, and the structure.
 std::optional<std::string> diagnose_stl(const std::string& path);
 /// Gmsh MSH sections: a missing $End... marker means a truncated file.
 std::optional<std::string> diagnose_msh(const std::string& path);
