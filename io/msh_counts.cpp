@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -141,13 +142,15 @@ long long count_lines_of_size(MshLines& lines, std::size_t size) {
 
 /// Format 4.1 $Nodes: "blocks nodes min max", then per block "dim entity
 /// parametric n", n tag lines and n coordinate lines.
-std::optional<std::string> check_v4_nodes(MshLines& lines, const std::string& path) {
+std::optional<std::string> check_v4_nodes(MshLines& lines, const std::string& path,
+                                          long long& max_tag) {
   std::vector<std::string> t;
   std::vector<long long> head, block;
   if (!lines.next(t) || !parse_counts(t, 4, head))
     return fmt::format("{}: line {}: expected '$Nodes' counts 'blocks nodes min-tag max-tag'", path,
                        lines.line());
   const long header = lines.line();
+  max_tag = head[3];
   long long total = 0;
   for (long long b = 0; b < head[0]; ++b) {
     if (!lines.next(t) || is_marker(t))
@@ -191,7 +194,8 @@ std::optional<std::string> check_v4_nodes(MshLines& lines, const std::string& pa
 
 /// Format 4.1 $Elements: "blocks elements min max", then per block "dim entity
 /// type n" and n lines "tag node...".
-std::optional<std::string> check_v4_elements(MshLines& lines, const std::string& path) {
+std::optional<std::string> check_v4_elements(MshLines& lines, const std::string& path,
+                                             long long max_node_tag) {
   std::vector<std::string> t;
   std::vector<long long> head, block;
   if (!lines.next(t) || !parse_counts(t, 4, head))
@@ -228,6 +232,14 @@ std::optional<std::string> check_v4_elements(MshLines& lines, const std::string&
         return fmt::format("{}: line {}: the element block declares {} elements but {} follow",
                            path, at, n, i);
       lines.next(t);
+      // Gmsh crashes on a node tag far beyond the others (SIGSEGV at 3e9)
+      for (std::size_t c = 1; c < t.size(); ++c) {
+        long long tag = 0;
+        if (!parse_count(t[c], tag) || tag < 1 || tag > max_node_tag)
+          return fmt::format("{}: line {}: element {} refers to node '{}', but the node tags go "
+                             "from 1 to {}", path, lines.line(), printable(t[0], 20),
+                             printable(t[c], 20), max_node_tag);
+      }
     }
     total += n;
     previous_block = at;
@@ -257,6 +269,7 @@ std::optional<std::string> check_msh_counts(const std::string& path) {
   std::vector<std::string> t;
   int major = 0;
   bool v41 = false;
+  long long max_node_tag = std::numeric_limits<int>::max();  // until $Nodes says
   while (lines.next(t)) {
     if (!is_marker(t)) continue;
     if (t[0] == "$MeshFormat") {
@@ -267,8 +280,8 @@ std::optional<std::string> check_msh_counts(const std::string& path) {
     } else if ((t[0] == "$Nodes" || t[0] == "$Elements") && (major == 2 || v41)) {
       const bool nodes = t[0] == "$Nodes";
       auto problem = major == 2 ? check_v2_section(lines, path, nodes)
-                     : nodes    ? check_v4_nodes(lines, path)
-                                : check_v4_elements(lines, path);
+                     : nodes    ? check_v4_nodes(lines, path, max_node_tag)
+                                : check_v4_elements(lines, path, max_node_tag);
       if (problem) return problem;
     }
   }
