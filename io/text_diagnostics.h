@@ -1,9 +1,10 @@
-// Finding the line at fault in a text mesh file that a library refused.
+// Finding the place at fault in a mesh file before a library reads it.
 //
-// CGAL's readers answer only yes or no; when they say no, these scanners look for
-// the first offending line so that the user's error names it. They are not
-// readers: they check the structure (counts, numbers, index ranges) and nothing
-// else.
+// CGAL's and Gmsh's readers answer only yes or no, trust the counts they read
+// (and allocate for them) and may drop what they cannot use without a word. So
+// these scanners run first, in bounded memory, and name the first offending line
+// (or element, for binary data). They are not readers: they check the structure
+// (counts, numbers, index ranges) and nothing else.
 #pragma once
 
 #include "io/file_format.h"
@@ -17,20 +18,23 @@ namespace qm::io {
 /// '?', and anything past `max_length` characters becomes "...".
 std::string printable(const std::string& text, std::size_t max_length = 60);
 
-/// "file.obj:12: ..." for the first malformed line of an OBJ file, if any.
+/// "file.obj: line 12: ..." for the first malformed line of an OBJ file, if any.
 std::optional<std::string> diagnose_obj(const std::string& path);
 /// The same for OFF (header, counts, truncation, index ranges).
 std::optional<std::string> diagnose_off(const std::string& path);
-/// PLY: the magic word and the end of the header.
+/// PLY: the header line by line (ply_header.h), then every count, list, index
+/// and coordinate of the data against it (ply_data.h).
 std::optional<std::string> diagnose_ply(const std::string& path);
-/// Binary size against the announced triangle count, or the ASCII structure.
+/// Binary: the size against the announced triangle count and every corner
+/// finite; ASCII: text, and the structure.
 std::optional<std::string> diagnose_stl(const std::string& path);
 /// Gmsh MSH sections: a missing $End... marker means a truncated file.
 std::optional<std::string> diagnose_msh(const std::string& path);
 
-/// The checks every reader makes before parsing: the file exists, is a regular,
-/// non-empty, readable file with a readable extension, and (text formats) its
-/// first problem if any. Returns its format; throws qm::Error(bad_input) with a
+/// The checks every reader makes before parsing: the file exists, is a regular
+/// file (not a directory, FIFO or device), non-empty and readable, with a readable
+/// extension, and (OBJ OFF PLY STL MSH) its first problem if any: binary bytes in
+/// a text format, a malformed line, or a count the data contradicts. Returns its format; throws qm::Error(bad_input) with a
 /// one-line message that starts with the path.
 Format check_input_file(const std::string& path);
 

@@ -63,18 +63,18 @@ TEST_CASE("bad files: missing, empty, unknown, truncated, random bytes, NaN") {
   const std::string nan_obj =
       write_text(dir, "nan.obj", "v 0 0 0\nv 1 0 0\nv nan 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n");
   const std::string nan_message = read_error(nan_obj);
-  CHECK(nan_message.find("nan.obj:3:") != std::string::npos);
+  CHECK(nan_message.find("nan.obj: line 3:") != std::string::npos);
   CHECK(nan_message.find("not a finite number") != std::string::npos);
 
   const std::string bad_index = write_text(dir, "index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n");
-  CHECK(read_error(bad_index).find("index.obj:4: face refers to vertex 7") != std::string::npos);
+  CHECK(read_error(bad_index).find("index.obj: line 4: face refers to vertex 7") != std::string::npos);
 
   const std::string off = "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n";
   CHECK(io::read_surface(write_text(dir, "ok.off", off)).soup.triangles.size() == 2);
   const std::string truncated_off = write_text(dir, "truncated.off", off.substr(0, off.size() - 8));
   CHECK(read_error(truncated_off).find("ends after 1 of 2 faces") != std::string::npos);
   CHECK(read_error(write_text(dir, "inf.off", "OFF\n3 1 0\n0 0 0\n1 inf 0\n0 1 0\n3 0 1 2\n"))
-            .find("inf.off:4: coordinate 'inf' is not a finite number") != std::string::npos);
+            .find("inf.off: line 4: coordinate 'inf' is not a finite number") != std::string::npos);
 
   std::mt19937 random(42);
   std::string noise(4000, '\0');

@@ -319,7 +319,7 @@ TEST_CASE("mesh refuses bad files with exit 3") {
   expect_refusal(dir + "/missing.obj", 3, "missing.obj: no such file");
 
   std::ofstream(dir + "/nan.obj") << "v 0 0 0\nv 1 0 0\nv 0 NaN 0\nf 1 2 3\n";
-  expect_refusal(dir + "/nan.obj", 3, "nan.obj:3: coordinate 'NaN' is not a finite number");
+  expect_refusal(dir + "/nan.obj", 3, "nan.obj: line 3: coordinate 'NaN' is not a finite number");
 
   std::ofstream(dir + "/cut.off") << "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n";
   expect_refusal(dir + "/cut.off", 3, "cut.off: the file ends after 1 of 2 faces");
