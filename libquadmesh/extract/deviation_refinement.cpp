@@ -240,9 +240,9 @@ DeviationRefinementReport refine_to_deviation(const TriangleSoup& surface,
   // turns a quad over, or takes the smallest scaled Jacobian below both its value
   // before the refinement and the usual 0.3 floor, is undone
   // (named variables, not a structured binding: a lambda below updates `inverted`)
-  const auto start = inverted_quads(quads);
-  auto inverted = start.first;
-  const double jacobian_floor = std::min(start.second, options.min_scaled_jacobian);
+  const auto at_start = inverted_quads(quads);
+  auto inverted = at_start.first;
+  const double jacobian_floor = std::min(at_start.second, options.min_scaled_jacobian);
   // chords whose split was undone, as (quad, direction) of the current quads: a
   // round that fails is tried again with the chords of one quad at a time (the
   // worst), and chords that fail alone are left out until a split succeeds (the

@@ -1,6 +1,8 @@
 #include "tests/support/test_meshes.h"
 
 #include <cmath>
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 
@@ -15,7 +17,9 @@ std::string example(const std::string& name) { return std::string(QM_EXAMPLES_DI
 
 std::string scratch_dir(const std::string& test_name) {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / ("quadmesh-test-" + test_name);
+  // the process id keeps two test runs at once (two checkouts, ctest -j) apart
+  const fs::path dir =
+      fs::temp_directory_path() / ("quadmesh-test-" + std::to_string(::getpid()) + "-" + test_name);
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir.string();

@@ -12,7 +12,8 @@ namespace qm::test {
 /// Path of a shared mesh (../shared/data/NAME) or of an example (examples/NAME).
 std::string shared_mesh(const std::string& name);
 std::string example(const std::string& name);
-/// A fresh empty folder under the system temp dir for one test.
+/// A fresh empty folder under the system temp dir for one test (its name has the
+/// process id, so that test runs at the same time keep apart).
 std::string scratch_dir(const std::string& test_name);
 /// Writes `text` to dir/name (a .geo written by a test); returns the path.
 std::string write_text(const std::string& dir, const std::string& name, const std::string& text);
