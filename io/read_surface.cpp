@@ -297,6 +297,7 @@ SurfaceFile read_with_gmsh_child(const std::string& path, Format format, const R
   ChildOptions child;
   child.timeout_seconds = sandbox.timeout_seconds;
   child.memory_limit_bytes = cad_memory_limit_bytes(sandbox);
+  child.crash_on_purpose = sandbox.crash_on_purpose;
   const ChildResult result =
       run_in_child([&] { return gmsh_child_main(path, format, options, fd); }, child);
 

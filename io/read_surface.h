@@ -24,6 +24,8 @@ struct CadSandbox {
   bool allow_geo_commands = false;
   /// Run Gmsh in this process, without limits (tests compare both ways).
   bool in_process = false;
+  /// Test hook: the child raises SIGSEGV before reading, as a crashing Gmsh would.
+  bool crash_on_purpose = false;
 };
 
 /// The sandbox a default-constructed ReadOptions starts with. The quadmesh

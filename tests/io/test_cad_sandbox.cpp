@@ -170,14 +170,16 @@ TEST_CASE("SystemCall is refused unless --allow-geo-commands; comments and strin
 TEST_CASE("writing, deleting and creating files is refused") {
   const std::string dir = test::scratch_dir("cad_writes");
   const std::string output = dir + "/out.msh";
+  // absolute paths: Gmsh takes some of them relative to its working folder
+  const std::string out = "\"" + dir + "/OUT.txt\"";
   const std::map<std::string, std::string> cases = {
-      {"Printf(\"x\") > \"OUT.txt\";", "line 5: Printf writes to a file (>)"},
-      {"Printf(\"x %g\", 2) >> \"OUT.txt\";", "line 5: Printf writes to a file (>>)"},
-      {"Save \"OUT.txt\";", "line 5: Save writes a file"},
-      {"Print \"OUT.txt\";", "line 5: Print writes a file"},
-      {"CreateDir \"OUT.txt\";", "line 5: CreateDir creates a folder"},
-      {"Delete File \"OUT.txt\";", "line 5: Delete File deletes a file"},
-      {"NonBlockingSystemCall \"touch OUT.txt\";", "line 5: NonBlockingSystemCall runs a shell"},
+      {"Printf(\"x\") > " + out + ";", "line 5: Printf writes to a file (>)"},
+      {"Printf(\"x %g\", 2) >> " + out + ";", "line 5: Printf writes to a file (>>)"},
+      {"Save " + out + ";", "line 5: Save writes a file"},
+      {"Print " + out + ";", "line 5: Print writes a file"},
+      {"CreateDir " + out + ";", "line 5: CreateDir creates a folder"},
+      {"Delete File " + out + ";", "line 5: Delete File deletes a file"},
+      {"NonBlockingSystemCall \"touch " + dir + "/OUT.txt\";", "line 5: NonBlockingSystemCall runs a shell"},
       {"Merge \"/etc/passwd\";", "line 5: Merge reads \"/etc/passwd\", outside the script's folder"},
       {"v() = ShapeFromFile(\"/tmp/../etc/x.brep\");", "line 5: ShapeFromFile reads"},
       {"Include StrCat(\"a\", \".geo\");", "line 5: Include of a computed path"},
@@ -194,10 +196,13 @@ TEST_CASE("writing, deleting and creating files is refused") {
       dir, "fine.geo", plate + "Printf(\"hello\");\nPrint.Width = 100;\nx = 2;\n");
   CHECK(read_error(fine).empty());
 
-  const std::string geo = test::write_text(dir, "plate.geo", plate + "Printf(\"x\") > \"OUT.txt\";\n");
+  const std::string geo = test::write_text(dir, "plate.geo", plate + "Printf(\"x\") > " + out + ";\n");
   check_refused(quadmesh("mesh " + quoted(geo) + " -o " + quoted(output)),
                 "plate.geo: line 5: Printf writes to a file", output);
   CHECK_FALSE(fs::exists(dir + "/OUT.txt"));
+  // allowed, Gmsh writes it (so the checks above can see a file written)
+  CHECK(read_error(geo, allowing()).empty());
+  CHECK(slurp(dir + "/OUT.txt") == "x\n");
 }
 
 TEST_CASE("includes: itself, a cycle, outside the folder, and the included script's commands") {
@@ -275,6 +280,18 @@ TEST_CASE("a script that loops forever ends at --cad-timeout") {
   CHECK(run.status != 124);
   check_refused(run, "loop.geo: Gmsh did not finish within 2 s (--cad-timeout)", output);
   CHECK(run.seconds < 30);
+}
+
+TEST_CASE("at the time-out, what the script started is killed too") {
+  const std::string dir = test::scratch_dir("cad_group");
+  const std::string marker = dir + "/LATE";
+  const std::string geo = test::write_text(
+      dir, "slow.geo", plate + "SystemCall \"sleep 4; touch " + marker + "\";\n");
+  io::ReadOptions options = allowing();
+  options.sandbox.timeout_seconds = 1;
+  CHECK(contains(read_error(geo, options), "slow.geo: Gmsh did not finish within 1 s"));
+  sleep(6);
+  CHECK_FALSE(fs::exists(marker));
 }
 
 TEST_CASE("a mesh size far too small ends at the time or memory limit") {
@@ -371,6 +388,15 @@ TEST_CASE("a .geo and a STEP through the child give the same SurfaceFile as in-p
   const std::string message = read_error(broken);
   CHECK(contains(message, "broken.geo: Gmsh could not read it: "));
   CHECK(message == read_error(broken, here));
+}
+
+TEST_CASE("a Gmsh crash ends with one line") {
+  io::ReadOptions options;
+  options.sandbox.crash_on_purpose = true;
+  const std::string geo = test::example("annulus.geo");
+  CHECK(read_error(geo, options) == geo + ": Gmsh crashed (signal 11)");
+  CHECK(read_error(test::shared_mesh("hinge.stl"), options) ==
+        test::shared_mesh("hinge.stl") + ": Gmsh crashed (signal 11)");
 }
 
 TEST_CASE("run_in_child: exit status, crash, time-out and the address-space limit") {
