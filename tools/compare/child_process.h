@@ -1,50 +1,17 @@
-// Running a program in a child process with a time limit: how `quadmesh compare`
-// keeps a crashing or hanging mesher from taking the comparison down with it.
+// `quadmesh compare` runs each mesher in a child process with a time limit. The
+// machinery lives in io/child_process.h (readers use it for Gmsh too); these
+// names keep compare's code as it was.
 #pragma once
 
-#include <string>
-#include <vector>
+#include "io/child_process.h"
 
 namespace qm::tools {
 
-/// How a child process ended.
-enum class ChildStatus {
-  ok,       ///< exited with status 0
-  failed,   ///< exited with a non-zero status (or could not be started)
-  crashed,  ///< killed by a signal it did not ask for (SIGSEGV, SIGABRT, ...)
-  timeout,  ///< still running at the deadline: killed with SIGKILL
-};
-
-/// "ok", "failed", "crashed", "timeout" (the words of report.json).
-const char* status_name(ChildStatus status);
-
-struct ChildOptions {
-  double timeout_seconds = 120.0;  ///< wall-clock limit; <= 0: none
-  std::string log_path;            ///< stdout and stderr go here; empty: /dev/null
-  std::string working_dir;         ///< the child's working folder; empty: ours
-  /// Test hook: the child raises SIGSEGV instead of running the program, as a
-  /// crashing mesher would.
-  bool crash_on_purpose = false;
-};
-
-struct ChildResult {
-  ChildStatus status = ChildStatus::failed;
-  double seconds = 0.0;  ///< wall-clock time from the start to the end (or the kill)
-  int exit_code = -1;    ///< the exit status when the child exited, else -1
-  int signal = 0;        ///< the signal that ended it (SIGKILL after a time-out), else 0
-  /// One line for a report: "exit status 4", "signal 11 (Segmentation fault)",
-  /// "no result after 120 s", or "" when ok.
-  std::string detail;
-};
-
-/// Runs `argv` (argv[0] looked up in PATH when it has no '/') with stdin from
-/// /dev/null, in its own process group, without core dumps. Waits until it ends or
-/// the deadline passes; at the deadline the whole process group gets SIGKILL.
-/// A program that cannot be started ends as `failed` with exit status 127.
-/// Precondition: argv is not empty.
-ChildResult run_child(const std::vector<std::string>& argv, const ChildOptions& options);
-
-/// This program's own executable (/proc/self/exe), to run it as a child.
-std::string own_executable();
+using io::ChildOptions;
+using io::ChildResult;
+using io::ChildStatus;
+using io::own_executable;
+using io::run_child;
+using io::status_name;
 
 }  // namespace qm::tools

@@ -11,6 +11,9 @@ struct CommonOptions {
   bool quiet = false;
   bool largest_component = false;
   double cad_mesh_size = 0.0;  ///< 0: automatic
+  double cad_timeout = 300.0;  ///< --cad-timeout: seconds Gmsh may take on one input
+  double cad_memory = 0.0;     ///< --cad-memory: GiB Gmsh may use; 0: automatic
+  bool allow_geo_commands = false;  ///< --allow-geo-commands
 };
 
 struct InfoOptions {

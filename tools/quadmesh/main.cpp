@@ -1,11 +1,13 @@
 // quadmesh: boundary-aligned quad meshes of surfaces with boundaries, from
 // symmetric holomorphic differentials. See README.md for every option.
+#include "io/read_surface.h"
 #include "tools/common/exit_codes.h"
 #include "tools/quadmesh/commands.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -36,6 +38,29 @@ void set_length_or_percent(const std::string& text, double& absolute, double& re
     absolute = std::stod(text);
 }
 
+/// CLI11 check of --cad-timeout and --cad-memory: a finite number above 0.
+std::string positive_finite(const std::string& v) {
+  try {
+    std::size_t used = 0;
+    const double x = std::stod(v, &used);
+    if (used == v.size() && std::isfinite(x) && x > 0) return std::string();
+  } catch (const std::exception&) {
+  }
+  return std::string("must be a positive number");
+}
+
+/// The options that put Gmsh in its sandbox (io::CadSandbox), on `app` or a subcommand.
+void add_cad_sandbox_options(CLI::App& app, CommonOptions& common) {
+  app.add_option("--cad-timeout", common.cad_timeout,
+                 "Seconds Gmsh may take to read and triangulate an input (default 300)")
+      ->check(positive_finite);
+  app.add_option("--cad-memory", common.cad_memory,
+                 "GiB of memory Gmsh may use (default: 8 or 3/4 of the memory, the smaller)")
+      ->check(positive_finite);
+  app.add_flag("--allow-geo-commands", common.allow_geo_commands,
+               ".geo input: allow SystemCall, writing files, Exit, and files outside its folder");
+}
+
 void print_error(const std::string& message) {
   fmt::print(stderr, "quadmesh: error: {}\n", message);
 }
@@ -52,6 +77,7 @@ int run(int argc, char** argv) {
   app.add_option("--cad-mesh-size", common.cad_mesh_size,
                  "CAD input: Gmsh triangle size (default: a third of the quad size)")
       ->check(CLI::NonNegativeNumber);
+  add_cad_sandbox_options(app, common);
 
   InfoOptions info;
   CLI::App* info_cmd = app.add_subcommand("info", "Topology of a surface and whether the method applies");
@@ -151,6 +177,7 @@ int run(int argc, char** argv) {
     sub->add_option("--cad-mesh-size", common.cad_mesh_size,
                     "CAD input: Gmsh triangle size (default: a third of the quad size)")
         ->check(CLI::NonNegativeNumber);
+    add_cad_sandbox_options(*sub, common);
   }
 
   try {
@@ -162,6 +189,10 @@ int run(int argc, char** argv) {
     fmt::print(stderr, "quadmesh: error: {} (see quadmesh --help)\n", e.what());
     return exit_usage;
   }
+  qm::io::CadSandbox& sandbox = qm::io::default_cad_sandbox();  // every read gets it
+  sandbox.timeout_seconds = common.cad_timeout;
+  sandbox.memory_gib = common.cad_memory;
+  sandbox.allow_geo_commands = common.allow_geo_commands;
   if (info_cmd->parsed()) return run_info(info, common);
   if (forms_cmd->parsed()) return run_forms(forms, common);
   if (quality_cmd->parsed()) return run_quality(quality, common);
