@@ -164,6 +164,16 @@ TEST_CASE("work limit: a size or count that implies too many quads is refused in
     CHECK(run.error_lines()[0].find("raise --max-quads") != std::string::npos);
     CHECK(seconds < 10);
   }
+  // CAD input is triangulated at a third of the quad size while it is read:
+  // Gmsh was meshing the plate at 0.001 for minutes before any estimate
+  {
+    const auto start = std::chrono::steady_clock::now();
+    const Run cad = test::shell_with_quadmesh("ulimit -v 2000000; timeout 60 QUADMESH mesh " +
+                                              quoted(test::example("plate-two-holes.geo")) + " -o " + out +
+                                              " --size 0.001");
+    expect_one_error(cad, 2, "--size 0.001 implies about ");
+    CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 10);
+  }
   // the estimate is area / size^2: a limit below it refuses, naming both
   const Run low = quadmesh("mesh " + kitten + " -o " + out + " --size 1% --max-quads 1000");
   expect_one_error(low, 2, "--size 1% implies about ");
@@ -202,7 +212,7 @@ TEST_CASE("messages: --form counts from 1, unknown commands are named, quality r
   std::ofstream(dir + "/nan.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 nan 0\nf 1 2 3 4\n";
   std::ofstream(dir + "/duplicate.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\n"
                                            "f 1 2 3 4\nf 2 5 6 3\nf 1 2 3 4\n";
-  for (const char* name : {"nan.obj", "duplicate.obj"}) {
+  for (const std::string name : {"nan.obj", "duplicate.obj"}) {
     CAPTURE(name);
     const std::string path = dir + "/" + name;
     const Run info = quadmesh("info --json " + quoted(path));

@@ -48,6 +48,19 @@ void check_quad_estimate(const MeshOptions& options, const TriangleSoup& soup) {
                                asked, std::min(estimate, 1e300), options.max_quads));
 }
 
+/// CAD input is triangulated at a third of the quad size while it is read: a
+/// size far too small would keep Gmsh meshing for ever before the estimate above
+/// is made. A coarse triangulation first (a tenth of the diagonal) gives the
+/// area for the same estimate (`read`: the options of the real reading).
+void check_cad_quad_estimate(const MeshOptions& options, const io::ReadOptions& read) {
+  if (!io::is_cad(io::format_of(options.input)) || (options.size <= 0 && options.size_relative <= 0)) return;
+  io::ReadOptions coarse = read;
+  coarse.cad_mesh_size = 0;
+  coarse.quad_size = 0;
+  coarse.quad_size_relative = 0.1;
+  check_quad_estimate(options, io::read_surface(options.input, coarse).soup);
+}
+
 /// --form K must name one of the surface's symmetric forms (the doubled surface's
 /// genus of them); said as the command line counts them, from 1.
 void check_form_choice(const MeshOptions& options, const AnalyzedSurface& surface) {
@@ -208,6 +221,7 @@ int run_mesh(const MeshOptions& options, const CommonOptions& common) {
   read.cad_mesh_size = common.cad_mesh_size;
   read.quad_size = options.size;
   read.quad_size_relative = options.size_relative;
+  check_cad_quad_estimate(options, read);
   const InputSurface in = load_input_surface(options.input, read, common.largest_component, progress);
   require_supported(in.surface);
   check_form_choice(options, in.surface);
