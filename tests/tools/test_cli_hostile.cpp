@@ -198,6 +198,13 @@ TEST_CASE("messages: --form counts from 1, unknown commands are named, quality r
                             quoted(dir + "/out.msh") + " --form 99");
   expect_one_error(form, 3, "--form 99: the surface has 3 symmetric forms (1 to 3)");
   CHECK(form.err.find("computing symmetric") == std::string::npos);  // told before the forms are computed
+  const Run coeffs = quadmesh("mesh " + quoted(test::shared_mesh("kitten-2holes.obj")) + " -o " +
+                              quoted(dir + "/out.msh") + " --coeffs 1,2");
+  expect_one_error(coeffs, 3, "--coeffs has 2 values but the surface has 3 symmetric forms");
+  CHECK(coeffs.err.find("computing symmetric") == std::string::npos);
+  expect_one_error(quadmesh("mesh " + quoted(test::shared_mesh("kitten-2holes.obj")) + " -o " +
+                            quoted(dir + "/out.msh") + " --coeffs 0,0,-0"),
+                   2, "--coeffs: all coefficients are 0");
 
   for (const std::string& args : {"frobnicate x.obj", "-q frobnicate x.obj", "--cad-mesh-size 2 frobnicate"}) {
     CAPTURE(args);

@@ -25,6 +25,9 @@ void check_files(const MeshOptions& options) {
   check_output_file({"-o", options.output});
   check_output_file({"--report", options.report});
   check_distinct({{"the input", options.input}, {"-o", options.output}, {"--report", options.report}});
+  if (!options.coefficients.empty() &&
+      std::all_of(options.coefficients.begin(), options.coefficients.end(), [](double c) { return c == 0; }))
+    throw UsageError("--coeffs: all coefficients are 0, so h would be 0; give at least one that is not");
   if (options.quads > options.max_quads)
     throw UsageError(fmt::format("--quads {} is more than --max-quads {}; raise --max-quads to mesh it",
                                  options.quads, options.max_quads));
@@ -62,11 +65,16 @@ void check_cad_quad_estimate(const MeshOptions& options, const io::ReadOptions& 
 }
 
 /// --form K must name one of the surface's symmetric forms (the doubled surface's
-/// genus of them); said as the command line counts them, from 1.
+/// genus of them), said as the command line counts them, from 1; --coeffs must
+/// give one value per form. Told before the forms are computed.
 void check_form_choice(const MeshOptions& options, const AnalyzedSurface& surface) {
-  if (options.form < 0) return;
-  const int forms = assess_applicability(surface).doubled_genus;
-  if (forms > 0 && options.form >= forms)
+  const Applicability verdict = assess_applicability(surface);
+  const int forms = verdict.doubled_genus;  // with boundary; closed surfaces are not meshed yet (exit 4)
+  if (verdict.kind == SurfaceCase::closed || forms <= 0) return;
+  if (!options.coefficients.empty() && static_cast<int>(options.coefficients.size()) != forms)
+    throw Error(ErrorCode::bad_input, fmt::format("--coeffs has {} values but the surface has {} symmetric forms",
+                                                  options.coefficients.size(), forms));
+  if (options.form >= forms)
     throw Error(ErrorCode::bad_input, fmt::format("--form {}: the surface has {} symmetric forms (1 to {})",
                                                   options.form + 1, forms, forms));
 }
