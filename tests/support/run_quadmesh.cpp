@@ -3,8 +3,10 @@
 #include "tests/support/test_meshes.h"
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -29,7 +31,8 @@ std::string quoted(const std::string& path) { return "'" + path + "'"; }
 
 Run shell_with_quadmesh(const std::string& command) {
   static int counter = 0;
-  const std::string dir = scratch_dir("cli_io_" + std::to_string(counter++));
+  // per process: test programs (and other checkouts' runs) share the temp dir
+  const std::string dir = scratch_dir("cli_io_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
   std::string line = command;
   const std::string word = "QUADMESH";
   const std::string program = quoted(QM_QUADMESH_BIN);
@@ -41,6 +44,8 @@ Run shell_with_quadmesh(const std::string& command) {
   run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   run.out = slurp(dir + "/out");
   run.err = slurp(dir + "/err");
+  std::error_code ignored;
+  std::filesystem::remove_all(dir, ignored);
   return run;
 }
 
