@@ -1,13 +1,12 @@
 // The quadmesh program as a user runs it: exit codes, one-line messages on
 // stderr that name the problem and where, and never a partial output file.
+#include "tests/support/run_quadmesh.h"
 #include "tests/support/test_meshes.h"
 
 #include <doctest/doctest.h>
 
 #include <cstdlib>
 #include <nlohmann/json.hpp>
-
-#include <sys/wait.h>
 
 #include <filesystem>
 #include <fstream>
@@ -17,40 +16,10 @@ using namespace qm;
 
 namespace {
 
-struct Run {
-  int status = -1;
-  std::string out, err;
-  /// stderr without the progress lines ("[   0.01 s] ...")
-  std::vector<std::string> error_lines() const {
-    std::vector<std::string> lines;
-    std::istringstream in(err);
-    for (std::string line; std::getline(in, line);)
-      if (!line.empty() && line[0] != '[') lines.push_back(line);
-    return lines;
-  }
-};
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-Run quadmesh(const std::string& args) {
-  static int counter = 0;
-  const std::string dir = test::scratch_dir("cli_io_" + std::to_string(counter++));
-  const std::string command = std::string("'") + QM_QUADMESH_BIN + "' " + args + " >'" + dir +
-                              "/out' 2>'" + dir + "/err' </dev/null";
-  const int raw = std::system(command.c_str());
-  Run run;
-  run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  run.out = slurp(dir + "/out");
-  run.err = slurp(dir + "/err");
-  return run;
-}
-
-std::string quoted(const std::string& path) { return "'" + path + "'"; }
+using test::quadmesh;
+using test::quoted;
+using test::Run;
+using test::slurp;
 
 /// `quadmesh mesh INPUT -o OUT.msh` must fail with `status`, print one error line
 /// containing `needle`, and leave no output file.

@@ -1,21 +1,19 @@
 #include "tools/common/input_surface.h"
 
-#include "io/write_mesh.h"
-
+#include <Eigen/Geometry>
 #include <fmt/format.h>
 
 namespace qm::tools {
 
-bool output_path_usable(const std::string& path, io::Format only) {
-  try {
-    io::check_output_path(path);
-    if (only != io::Format::unknown && io::format_of(path) != only)
-      throw Error(ErrorCode::bad_input, fmt::format("{}: this output must be a .msh file", path));
-  } catch (const Error& e) {
-    fmt::print(stderr, "quadmesh: error: {}\n", e.what());
-    return false;
+double total_area(const TriangleSoup& soup) {
+  double area = 0;
+  for (const Triangle& t : soup.triangles) {
+    const Vec3& a = soup.points[static_cast<std::size_t>(t[0])];
+    area += 0.5 * (soup.points[static_cast<std::size_t>(t[1])] - a)
+                      .cross(soup.points[static_cast<std::size_t>(t[2])] - a)
+                      .norm();
   }
-  return true;
+  return area;
 }
 
 InputSurface load_input_surface(const std::string& path, const io::ReadOptions& read,

@@ -14,9 +14,8 @@ struct InputSurface {
   std::size_t dropped_components = 0;
 };
 
-/// Checks an output path before any work (known extension, existing folder, and
-/// `only` if not unknown); prints the one-line error and returns false otherwise.
-bool output_path_usable(const std::string& path, io::Format only = io::Format::unknown);
+/// The surface's area (the sum of its triangles'): the work limits' estimates.
+double total_area(const TriangleSoup& soup);
 
 /// Reads and analyses `path`, reporting stages on `progress`. Throws qm::Error
 /// for unreadable files; topology verdicts are left to the caller.

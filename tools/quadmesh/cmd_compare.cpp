@@ -6,11 +6,14 @@
 // Test hook: QUADMESH_COMPARE_CRASH=NAME[,NAME...] makes those methods' child
 // processes raise SIGSEGV instead of running (they must then be reported as
 // `crashed` while the tool still succeeds).
+#include "io/atomic_file.h"
 #include "io/file_format.h"
 #include "io/read_polygon_mesh.h"
 #include "io/write_mesh.h"
 #include "tools/common/exit_codes.h"
 #include "tools/common/input_surface.h"
+#include "tools/common/output_paths.h"
+#include "tools/common/usage_error.h"
 #include "tools/compare/child_process.h"
 #include "tools/compare/comparison_report.h"
 #include "tools/compare/methods.h"
@@ -45,8 +48,30 @@ bool crash_requested(const std::string& name) {
 void write_text(const fs::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
   out << text;
+  out.close();  // the last buffer is written here: check after it
   if (!out)
     throw Error(ErrorCode::bad_input, fmt::format("{}: cannot write the file", path.string()));
+}
+
+/// Every file compare writes into its folder (README "quadmesh compare").
+std::vector<std::string> files_written() {
+  std::vector<std::string> names = {"input.msh", "report.json", "report.md", kAngleHistogramFile,
+                                    kJacobianHistogramFile, "gmsh-version.log"};
+  for (const Method& method : comparison_methods(MethodSetup{})) {
+    names.push_back(method.mesh_file);
+    if (!method.script_file.empty()) names.push_back(method.script_file);
+    names.push_back(method.name + ".log");
+  }
+  return names;
+}
+
+/// Before any work: --out usable, and the input none of the files written there.
+void check_files(const fs::path& input, const fs::path& dir) {
+  check_output_folder({"--out", dir.string()});
+  for (const std::string& name : files_written())
+    if (same_file(input.string(), (dir / name).string()))
+      throw UsageError(fmt::format("--out {}: compare writes {} there, which is the input; give --out another folder",
+                                   dir.string(), name));
 }
 
 /// The first error message in a method's log: ours print "quadmesh: error: ...",
@@ -132,6 +157,7 @@ int run_compare(const CompareOptions& options, const CommonOptions& common) {
   const fs::path input = fs::absolute(options.input);
   const fs::path dir = options.out_dir.empty() ? fs::path("compare-" + input.stem().string())
                                                : fs::path(options.out_dir);
+  check_files(input, dir);
 
   // The reference: the input triangulation as `quadmesh mesh` reads it.
   io::ReadOptions read;
@@ -154,14 +180,16 @@ int run_compare(const CompareOptions& options, const CommonOptions& common) {
   const TriangleSoup& reference = in.surface.soup;
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir)) {
-    fmt::print(stderr, "quadmesh: error: {}: cannot create the output folder{}\n", dir.string(),
-               ec ? ": " + ec.message() : std::string());
-    return exit_usage;
-  }
+  if (ec || !fs::is_directory(dir))
+    throw UsageError(fmt::format("{}: cannot create the output folder{}", dir.string(),
+                                 ec ? ": " + ec.message() : std::string()));
   progress.stage(
       fmt::format("writing the reference triangulation {}", (dir / "input.msh").string()));
-  io::write_mesh((dir / "input.msh").string(), io::output_mesh_of(reference));
+  try {
+    io::write_mesh((dir / "input.msh").string(), io::output_mesh_of(reference));
+  } catch (const Error& e) {
+    throw UsageError(e.what());
+  }
 
   ComparisonReport report;
   report.input = options.input;
@@ -202,10 +230,19 @@ int run_compare(const CompareOptions& options, const CommonOptions& common) {
   }
 
   progress.stage(fmt::format("writing the reports into {}", dir.string()));
-  write_text(dir / "report.json", report_json(report).dump(2) + "\n");
-  write_text(dir / kAngleHistogramFile, angle_histogram_svg(report));
-  write_text(dir / kJacobianHistogramFile, jacobian_histogram_svg(report));
-  write_text(dir / "report.md", report_markdown(report));
+  try {  // the reports appear together or not at all
+    io::AtomicFiles reports;
+    const auto add = [&](const fs::path& path, const std::string& text) {
+      reports.add(path.string(), [&](const std::string& temporary) { write_text(temporary, text); });
+    };
+    add(dir / "report.json", report_json(report).dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n");
+    add(dir / kAngleHistogramFile, angle_histogram_svg(report));
+    add(dir / kJacobianHistogramFile, jacobian_histogram_svg(report));
+    add(dir / "report.md", report_markdown(report));
+    reports.commit();
+  } catch (const Error& e) {
+    throw UsageError(fmt::format("{}; no report was written", e.what()));
+  }
 
   fmt::print("{} at size {:.4g}: {}\n", options.input, size, (dir / "report.md").string());
   for (const MethodRun& run : report.runs)

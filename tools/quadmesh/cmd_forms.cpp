@@ -9,10 +9,15 @@
 #include "libquadmesh/forms/symmetric_forms.h"
 #include "tools/common/exit_codes.h"
 #include "tools/common/input_surface.h"
+#include "tools/common/output_paths.h"
+#include "tools/common/usage_error.h"
 #include "tools/quadmesh/commands.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
 
 namespace qm::tools {
 
@@ -89,16 +94,28 @@ void write_form_views(const std::string& path, const SymmetricForms& forms,
   io::write_views(path, mesh, vectors, scalars);
 }
 
+/// The work limit of --remesh-size, before the remeshing: the triangles it
+/// implies (area over an equilateral triangle's, sqrt(3)/4 H^2) against --max-triangles.
+void check_triangle_estimate(const FormsOptions& options, const TriangleSoup& soup) {
+  if (options.remesh_size <= 0) return;
+  const double estimate = total_area(soup) / (0.25 * std::sqrt(3.0) * options.remesh_size * options.remesh_size);
+  if (!(estimate > static_cast<double>(options.max_triangles))) return;
+  throw UsageError(fmt::format("--remesh-size {:g} implies about {:.3g} triangles, more than --max-triangles {}; "
+                               "give a larger --remesh-size, or raise --max-triangles",
+                               options.remesh_size, std::min(estimate, 1e300), options.max_triangles));
+}
+
 }  // namespace
 
 int run_forms(const FormsOptions& options, const CommonOptions& common) {
   const Progress progress(common.quiet || options.json);
   io::ReadOptions read;
   read.cad_mesh_size = common.cad_mesh_size;
-  if (!options.views.empty() && !output_path_usable(options.views, io::Format::msh))
-    return exit_usage;
+  check_output_file({"-o", options.views}, io::Format::msh);
+  check_distinct({{"the input", options.input}, {"-o", options.views}});
   InputSurface in = load_input_surface(options.input, read, common.largest_component, progress);
   require_supported(in.surface);
+  check_triangle_estimate(options, in.surface.soup);
   const TriangleQuality input_quality = triangle_quality(in.surface.soup);
   const bool remeshed = options.remesh || options.remesh_size > 0;
   if (remeshed) {
@@ -163,7 +180,11 @@ int run_forms(const FormsOptions& options, const CommonOptions& common) {
                remeshed ? "; try a smaller --remesh-size" : "; try --remesh");
   if (!options.views.empty()) {
     progress.stage(fmt::format("writing the views to {}", options.views));
-    write_form_views(options.views, forms, in.surface, mesh);
+    try {
+      write_form_views(options.views, forms, in.surface, mesh);
+    } catch (const Error& e) {  // an output path problem (exit 2), and nothing left
+      throw UsageError(e.what());
+    }
   }
   if (options.json) {
     fmt::print("{}\n", j.dump(2));

@@ -1,27 +1,100 @@
+#include "io/atomic_file.h"
 #include "io/write_mesh.h"
 #include "libquadmesh/pipeline/mesh_quads.h"
 #include "libquadmesh/quality/hausdorff.h"
 #include "libquadmesh/quality/quad_quality.h"
 #include "tools/common/exit_codes.h"
 #include "tools/common/input_surface.h"
+#include "tools/common/output_paths.h"
+#include "tools/common/usage_error.h"
 #include "tools/quadmesh/commands.h"
 #include "tools/quadmesh/quad_output.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <filesystem>
+#include <cmath>
 #include <limits>
 
 namespace qm::tools {
 
 namespace {
-/// The report's folder must exist (any extension; .json is the habit).
-bool report_path_usable(const std::string& path) {
-  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-  if (folder.empty() || std::filesystem::is_directory(folder)) return true;
-  fmt::print(stderr, "quadmesh: error: {}: the folder {} does not exist\n", path, folder.string());
-  return false;
+/// Before any work: -o and --report writable, and neither the input nor each
+/// other (README "Exit codes": 2).
+void check_files(const MeshOptions& options) {
+  check_output_file({"-o", options.output});
+  check_output_file({"--report", options.report});
+  check_distinct({{"the input", options.input}, {"-o", options.output}, {"--report", options.report}});
+  if (!options.coefficients.empty() &&
+      std::all_of(options.coefficients.begin(), options.coefficients.end(), [](double c) { return c == 0; }))
+    throw UsageError("--coeffs: all coefficients are 0, so h would be 0; give at least one that is not");
+  if (options.quads > options.max_quads)
+    throw UsageError(fmt::format("--quads {} is more than --max-quads {}; raise --max-quads to mesh it",
+                                 options.quads, options.max_quads));
+}
+
+/// The work limit, once the input is read and before the forms: the quad count
+/// --size implies (area / size^2, as mesh_quads scales h) against --max-quads.
+void check_quad_estimate(const MeshOptions& options, const TriangleSoup& soup) {
+  if (options.quads > 0) return;  // checked with the files
+  const double diagonal = bounding_box_diagonal(soup.points, soup.triangles);
+  const double size = options.size > 0            ? options.size
+                      : options.size_relative > 0 ? options.size_relative * diagonal
+                                                  : diagonal / 60.0;
+  const double estimate = total_area(soup) / (size * size);
+  if (!(estimate > static_cast<double>(options.max_quads))) return;
+  const std::string asked = options.size > 0            ? fmt::format("--size {:g}", options.size)
+                            : options.size_relative > 0 ? fmt::format("--size {:g}%", 100 * options.size_relative)
+                                                        : std::string("the default size (1/60 of the diagonal)");
+  throw UsageError(fmt::format("{} implies about {:.3g} quads (surface area / size^2), more than --max-quads {}; "
+                               "give a larger --size, or raise --max-quads to mesh it",
+                               asked, std::min(estimate, 1e300), options.max_quads));
+}
+
+/// CAD input is triangulated at a third of the quad size while it is read: a
+/// size far too small would keep Gmsh meshing for ever before the estimate above
+/// is made. A coarse triangulation first (a tenth of the diagonal) gives the
+/// area for the same estimate (`read`: the options of the real reading).
+void check_cad_quad_estimate(const MeshOptions& options, const io::ReadOptions& read) {
+  if (!io::is_cad(io::format_of(options.input)) || (options.size <= 0 && options.size_relative <= 0)) return;
+  io::ReadOptions coarse = read;
+  coarse.cad_mesh_size = 0;
+  coarse.quad_size = 0;
+  coarse.quad_size_relative = 0.1;
+  check_quad_estimate(options, io::read_surface(options.input, coarse).soup);
+}
+
+/// --form K must name one of the surface's symmetric forms (the doubled surface's
+/// genus of them), said as the command line counts them, from 1; --coeffs must
+/// give one value per form. Told before the forms are computed.
+void check_form_choice(const MeshOptions& options, const AnalyzedSurface& surface) {
+  const Applicability verdict = assess_applicability(surface);
+  const int forms = verdict.doubled_genus;  // with boundary; closed surfaces are not meshed yet (exit 4)
+  if (verdict.kind == SurfaceCase::closed || forms <= 0) return;
+  if (!options.coefficients.empty() && static_cast<int>(options.coefficients.size()) != forms)
+    throw Error(ErrorCode::bad_input, fmt::format("--coeffs has {} values but the surface has {} symmetric forms",
+                                                  options.coefficients.size(), forms));
+  if (options.form >= forms)
+    throw Error(ErrorCode::bad_input, fmt::format("--form {}: the surface has {} symmetric forms (1 to {})",
+                                                  options.form + 1, forms, forms));
+}
+
+/// The mesh and the report appear together or not at all; a file that cannot
+/// be written is an output path problem (exit 2), and then none is left.
+void write_outputs(const MeshOptions& options, const QuadMeshResult& result, const MeshSummary& summary) {
+  try {
+    io::AtomicFiles files;
+    io::WriteOptions write;
+    write.msh_version = options.msh_version;
+    files.add(options.output, [&](const std::string& temporary) {
+      io::write_mesh(temporary, output_mesh(result), write);
+    });
+    if (!options.report.empty())
+      files.add(options.report, [&](const std::string& temporary) { write_report(temporary, summary); });
+    files.commit();
+  } catch (const Error& e) {
+    throw UsageError(fmt::format("{}; no output was written", e.what()));
+  }
 }
 
 /// "<lead> near (x, y, z)": the centroid of the first triangle where the extraction
@@ -150,15 +223,17 @@ void warn_if_far(const MeshSummary& s, const QuadMeshResult& r, double diagonal)
 }  // namespace
 
 int run_mesh(const MeshOptions& options, const CommonOptions& common) {
-  if (!output_path_usable(options.output)) return exit_usage;
-  if (!options.report.empty() && !report_path_usable(options.report)) return exit_usage;
+  check_files(options);
   const Progress progress(common.quiet);
   io::ReadOptions read;
   read.cad_mesh_size = common.cad_mesh_size;
   read.quad_size = options.size;
   read.quad_size_relative = options.size_relative;
+  check_cad_quad_estimate(options, read);
   const InputSurface in = load_input_surface(options.input, read, common.largest_component, progress);
   require_supported(in.surface);
+  check_form_choice(options, in.surface);
+  check_quad_estimate(options, in.surface.soup);
   progress.stage(assess_applicability(in.surface).reason);
 
   QuadMeshOptions mesher;
@@ -180,10 +255,7 @@ int run_mesh(const MeshOptions& options, const CommonOptions& common) {
   const MeshSummary summary = summarize(in, result, options, progress.elapsed());
   require_conforming(summary, result);
   progress.stage(fmt::format("writing {}", options.output));
-  io::WriteOptions write;
-  write.msh_version = options.msh_version;
-  io::write_mesh(options.output, output_mesh(result), write);
-  if (!options.report.empty()) write_report(options.report, summary);
+  write_outputs(options, result, summary);
   print_summary(summary);
   warn_if_cells_dropped(result);
   warn_if_stray_boundary(result);

@@ -3,6 +3,7 @@
 #include "io/read_polygon_mesh.h"
 #include "io/read_surface.h"
 #include "libquadmesh/quality/quad_quality.h"
+#include "libquadmesh/topology/applicability.h"
 #include "tools/common/exit_codes.h"
 #include "tools/common/progress.h"
 #include "tools/common/quality_json.h"
@@ -72,18 +73,32 @@ std::string quality_text(const QuadQuality& q, bool with_reference) {
   return out;
 }
 
+/// What `quadmesh info` refuses as invalid data (non-finite coordinates, a face
+/// with a repeated vertex, duplicate faces) is refused here too, with info's
+/// reason (exit 3): the figures of such a mesh mean nothing. Other defects
+/// (non-manifold, several components) are measured and reported, not refused.
+void require_valid_data(const std::string& path, const io::ReadOptions& read) {
+  AnalyzedSurface surface = analyze_topology(io::read_surface(path, read).soup);
+  const TopologyReport& r = surface.report;
+  if (r.nonfinite_vertices.empty() && r.repeated_corner_faces.empty() && r.duplicate_faces.empty()) return;
+  // assess_applicability names these first, in this order
+  throw Error(ErrorCode::bad_input, fmt::format("{}: {}", path, assess_applicability(surface).reason));
+}
+
 }  // namespace
 
 int run_quality(const QualityOptions& options, const CommonOptions& common) {
   const Progress progress(common.quiet || options.json);
   progress.stage(fmt::format("reading {}", options.input));
+  io::ReadOptions read;
+  read.cad_mesh_size = common.cad_mesh_size;
+  require_valid_data(options.input, read);
   const PolygonMesh mesh = io::read_polygon_mesh(options.input);
   io::SurfaceFile reference;
   const bool with_reference = !options.reference.empty();
   if (with_reference) {
     progress.stage(fmt::format("reading the reference {}", options.reference));
-    io::ReadOptions read;
-    read.cad_mesh_size = common.cad_mesh_size;
+    require_valid_data(options.reference, read);
     reference = io::read_surface(options.reference, read);
   }
   progress.stage("measuring quality");

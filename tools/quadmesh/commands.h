@@ -28,6 +28,7 @@ struct MeshOptions {
   double size = 0.0;         ///< target quad edge length; 0: 1/60 of the bounding-box diagonal
   double size_relative = 0.0;  ///< --size P%: P/100 of the bounding-box diagonal
   std::size_t quads = 0;     ///< target quad count (wins over size)
+  std::size_t max_quads = 5000000;  ///< --max-quads: refuse a size or count implying more quads
   int form = -1;             ///< -1: auto; else the symmetric basis form (from 0)
   std::vector<double> coefficients;  ///< --coeffs
   bool rotate = false;
@@ -46,6 +47,7 @@ struct FormsOptions {
   bool remesh = false;       ///< isotropic remeshing first
   bool repair = false;       ///< flips/splits curing negative cotangent weights
   double remesh_size = 0.0;  ///< its target edge length; 0: 0.4 x the mean edge length
+  std::size_t max_triangles = 5000000;   ///< --max-triangles: refuse a --remesh-size implying more
 };
 
 struct QualityOptions {

@@ -2,7 +2,9 @@
 // symmetric holomorphic differentials. See README.md for every option.
 #include "io/read_surface.h"
 #include "tools/common/exit_codes.h"
+#include "tools/common/usage_error.h"
 #include "tools/quadmesh/commands.h"
+#include "tools/quadmesh/option_checks.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -11,22 +13,11 @@
 #include <cstdio>
 #include <exception>
 #include <string>
+#include <vector>
 
 namespace {
 
 using namespace qm::tools;
-
-/// CLI11 check of --size: a positive length or a percentage of the diagonal.
-std::string size_or_percent(const std::string& v) {
-  try {
-    std::size_t used = 0;
-    const double x = std::stod(v, &used);
-    const bool percent = used + 1 == v.size() && v.back() == '%';
-    if (x > 0 && (used == v.size() || percent)) return std::string();
-  } catch (const std::exception&) {
-  }
-  return std::string("must be a positive length or a percentage such as 1.5%");
-}
 
 /// Stores a validated `size_or_percent` text: a length in `absolute`, or P% as P/100
 /// in `relative`; an empty text leaves both as they are.
@@ -38,31 +29,55 @@ void set_length_or_percent(const std::string& text, double& absolute, double& re
     absolute = std::stod(text);
 }
 
-/// CLI11 check of --cad-timeout and --cad-memory: a finite number above 0.
-std::string positive_finite(const std::string& v) {
-  try {
-    std::size_t used = 0;
-    const double x = std::stod(v, &used);
-    if (used == v.size() && std::isfinite(x) && x > 0) return std::string();
-  } catch (const std::exception&) {
-  }
-  return std::string("must be a positive number");
-}
-
 /// The options that put Gmsh in its sandbox (io::CadSandbox), on `app` or a subcommand.
 void add_cad_sandbox_options(CLI::App& app, CommonOptions& common) {
-  app.add_option("--cad-timeout", common.cad_timeout,
-                 "Seconds Gmsh may take to read and triangulate an input (default 300)")
-      ->check(positive_finite);
-  app.add_option("--cad-memory", common.cad_memory,
-                 "GiB of memory Gmsh may use (default: 8 or 3/4 of the memory, the smaller)")
-      ->check(positive_finite);
+  checked(app.add_option("--cad-timeout", common.cad_timeout,
+                         "Seconds Gmsh may take to read and triangulate an input (default 300)"),
+          seconds());
+  checked(app.add_option("--cad-memory", common.cad_memory,
+                         "GiB of memory Gmsh may use (default: 8 or 3/4 of the memory, the smaller)"),
+          gibibytes());
   app.add_flag("--allow-geo-commands", common.allow_geo_commands,
                ".geo input: allow SystemCall, writing files, Exit, and files outside its folder");
 }
 
-void print_error(const std::string& message) {
-  fmt::print(stderr, "quadmesh: error: {}\n", message);
+void print_error(const std::string& message) noexcept {
+  try {
+    fmt::print(stderr, "quadmesh: error: {}\n", message);
+  } catch (
+      ...) {  // stderr unwritable (a full disk, a file size limit): the exit status still says it
+  }
+}
+
+/// The first argument that is neither an option nor an option's value: the
+/// command the user meant, or "" (CLI11 says only "A subcommand is required").
+std::string first_word(const CLI::App& app, int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg.empty() || arg[0] != '-') return arg;
+    if (arg.find('=') != std::string::npos) continue;
+    for (const CLI::Option* option : app.get_options())
+      if (option->check_name(arg) && option->get_items_expected_min() > 0) ++i;  // skip its value
+  }
+  return std::string();
+}
+
+/// One line for a command line CLI11 refused.
+std::string parse_error_line(const CLI::ParseError& e, const CLI::App& app,
+                             const std::vector<CLI::App*>& commands, int argc, char** argv) {
+  bool command_given = false;
+  for (const CLI::App* command : commands)
+    command_given = command_given || command->parsed();
+  const bool no_command =
+      dynamic_cast<const CLI::RequiredError*>(&e) || dynamic_cast<const CLI::ExtrasError*>(&e);
+  if (command_given || !no_command) return fmt::format("{} (see quadmesh --help)", e.what());
+  std::vector<std::string> names;
+  for (const CLI::App* command : commands)
+    names.push_back(command->get_name());
+  const std::string word = first_word(app, argc, argv);
+  if (word.empty())
+    return fmt::format("a command is required (commands: {})", fmt::join(names, ", "));
+  return fmt::format("unknown command '{}' (commands: {})", word, fmt::join(names, ", "));
 }
 
 int run(int argc, char** argv) {
@@ -74,9 +89,9 @@ int run(int argc, char** argv) {
   app.add_flag("-q,--quiet", common.quiet, "No progress lines on stderr");
   app.add_flag("--largest-component", common.largest_component,
                "Keep only the largest connected component of the input");
-  app.add_option("--cad-mesh-size", common.cad_mesh_size,
-                 "CAD input: Gmsh triangle size (default: a third of the quad size)")
-      ->check(CLI::NonNegativeNumber);
+  checked(app.add_option("--cad-mesh-size", common.cad_mesh_size,
+                         "CAD input: Gmsh triangle size (default: a third of the quad size)"),
+          positive_length());
   add_cad_sandbox_options(app, common);
 
   InfoOptions info;
@@ -95,9 +110,17 @@ int run(int argc, char** argv) {
                       "Remesh isotropically first (boundary kept): cures slivers and coarse obtuse meshes");
   forms_cmd->add_flag("--repair", forms.repair,
                       "Cure negative cotangent weights: flip where flat, split elsewhere (after --remesh)");
-  forms_cmd->add_option("--remesh-size", forms.remesh_size,
-                        "Target edge length of --remesh (default: 0.4 x the mean edge length)")
-      ->check(CLI::PositiveNumber);
+  checked(
+      forms_cmd->add_option("--remesh-size", forms.remesh_size,
+                            "Target edge length of --remesh (default: 0.4 x the mean edge length)"),
+      positive_length());
+  checked(
+      forms_cmd
+          ->add_option(
+              "--max-triangles", forms.max_triangles,
+              "Refuse a --remesh-size that implies more triangles than this (area / (0.433 H^2))")
+          ->capture_default_str(),
+      whole_count());
 
   MeshOptions mesh;
   CLI::App* mesh_cmd = app.add_subcommand("mesh", "Quad-mesh a surface");
@@ -105,46 +128,54 @@ int run(int argc, char** argv) {
   mesh_cmd->add_option("-o,--output", mesh.output, "Output mesh (format from the extension)")
       ->required();
   std::string size_text;
-  mesh_cmd->add_option("--size", size_text,
-                       "Target quad edge length, or P% of the bounding-box diagonal (default: 1/60 of it)")
-      ->check(size_or_percent);
-  mesh_cmd->add_option("--quads", mesh.quads, "Target number of quads (instead of --size)")
-      ->check(CLI::PositiveNumber);
+  checked(mesh_cmd->add_option(
+              "--size", size_text,
+              "Target quad edge length, or P% of the bounding-box diagonal (default: 1/60 of it)"),
+          length_or_percent());
+  checked(mesh_cmd->add_option("--quads", mesh.quads, "Target number of quads (instead of --size)"),
+          whole_count());
+  checked(mesh_cmd
+              ->add_option(
+                  "--max-quads", mesh.max_quads,
+                  "Refuse, before the forms, a --size or --quads that implies more quads than this")
+              ->capture_default_str(),
+          whole_count());
   std::string form_choice = "auto";
-  mesh_cmd->add_option("--form", form_choice,
-                       "The differential: auto (most uniform |h|) or K, the K-th symmetric basis form (from 1)")
-      ->check([](const std::string& v) {
-        if (v == "auto") return std::string();
-        try {
-          std::size_t used = 0;
-          if (std::stoi(v, &used) >= 1 && used == v.size()) return std::string();
-        } catch (const std::exception&) {
-        }
-        return std::string("must be auto or a positive integer");
-      });
-  mesh_cmd->add_option("--coeffs", mesh.coefficients,
+  checked(
+      mesh_cmd->add_option(
+          "--form", form_choice,
+          "The differential: auto (most uniform |h|) or K, the K-th symmetric basis form (from 1)"),
+      form_number());
+  checked(
+      mesh_cmd
+          ->add_option("--coeffs", mesh.coefficients,
                        "Real coefficients c1,c2,... of h = sum c_k h_k over the symmetric basis")
-      ->delimiter(',')
-      ->excludes("--form");
+          ->delimiter(',')
+          ->excludes("--form"),
+      coefficient());
   mesh_cmd->add_flag("--rotate", mesh.rotate, "Use i*h: the same grid turned by 90 degrees");
   mesh_cmd->add_flag("--no-smoothing", mesh.no_smoothing,
                      "Keep every quad corner where the extraction put it (no smoothing of the worst quads "
                      "or of the angles)");
-  mesh_cmd->add_option("--corner-angle", mesh.corner_angle_deg,
-                       "Boundary turning angle (degrees) above which a vertex is a corner put on the grid")
-      ->check(CLI::Range(0.0, 180.0));
-  mesh_cmd->add_option("--tip-angle", mesh.tip_angle_deg,
-                       "With --form auto: boundary vertices where the surface turns this much or more "
-                       "(degrees) get a zero of h, so four quads share the turn rather than two; above 360: none")
-      ->check(CLI::Range(180.0, 720.0));
+  checked(mesh_cmd->add_option(
+              "--corner-angle", mesh.corner_angle_deg,
+              "Boundary turning angle (degrees) above which a vertex is a corner put on the grid"),
+          degrees(0.0, 180.0, true));
+  checked(mesh_cmd->add_option(
+              "--tip-angle", mesh.tip_angle_deg,
+              "With --form auto: boundary vertices where the surface turns this much or more "
+              "(degrees) get a zero of h, so four quads share the turn rather than two; above "
+              "360: none"),
+          degrees(180.0, 720.0, false));
   std::string deviation_text;
-  mesh_cmd->add_option("--max-deviation", deviation_text,
-                       "Split quad strips where the quads are farther than D (or P% of the diagonal) from "
-                       "the input; off: no refinement (default: half the quad size)")
-      ->check([](const std::string& v) { return v == "off" || size_or_percent(v).empty() ? std::string() : std::string("must be off, a positive length or a percentage such as 0.5%"); });
+  checked(mesh_cmd->add_option(
+              "--max-deviation", deviation_text,
+              "Split quad strips where the quads are farther than D (or P% of the diagonal) from "
+              "the input; off: no refinement (default: half the quad size)"),
+          length_or_percent(true));
   mesh_cmd->add_option("--report", mesh.report, "Write a JSON report (quality, zeros, quantization, timings)");
-  mesh_cmd->add_option("--msh-version", mesh.msh_version, "MSH output version: 4.1 or 2.2")
-      ->check(CLI::IsMember({4.1, 2.2}));
+  checked(mesh_cmd->add_option("--msh-version", mesh.msh_version, "MSH output version: 4.1 or 2.2"),
+          msh_version());
 
   QualityOptions quality;
   CLI::App* quality_cmd =
@@ -159,14 +190,16 @@ int run(int argc, char** argv) {
       "compare", "Ours against Gmsh's quad meshing on the same input and size: reports, pictures, meshes");
   compare_cmd->add_option("FILE", compare.input, "Input surface")->required();
   std::string compare_size;
-  compare_cmd->add_option("--size", compare_size,
-                          "Target quad edge length, or P% of the bounding-box diagonal (default: 1/60 of it)")
-      ->check(size_or_percent);
+  checked(compare_cmd->add_option(
+              "--size", compare_size,
+              "Target quad edge length, or P% of the bounding-box diagonal (default: 1/60 of it)"),
+          length_or_percent());
   compare_cmd->add_option("--out", compare.out_dir,
                           "Folder for report.md, report.json, the pictures and every mesh "
                           "(default: compare-<input name>)");
-  compare_cmd->add_option("--timeout", compare.timeout, "Seconds each method may run (default 120)")
-      ->check(CLI::PositiveNumber);
+  checked(compare_cmd->add_option("--timeout", compare.timeout,
+                                  "Seconds each method may run (default 120)"),
+          seconds());
   compare_cmd->add_option("--gmsh", compare.gmsh, "The Gmsh program of the baselines (default: gmsh)");
 
   // Options given after the subcommand apply too (quadmesh mesh f.obj -o g.msh --quiet).
@@ -174,9 +207,9 @@ int run(int argc, char** argv) {
     sub->add_flag("-q,--quiet", common.quiet, "No progress lines on stderr");
     sub->add_flag("--largest-component", common.largest_component,
                   "Keep only the largest connected component of the input");
-    sub->add_option("--cad-mesh-size", common.cad_mesh_size,
-                    "CAD input: Gmsh triangle size (default: a third of the quad size)")
-        ->check(CLI::NonNegativeNumber);
+    checked(sub->add_option("--cad-mesh-size", common.cad_mesh_size,
+                            "CAD input: Gmsh triangle size (default: a third of the quad size)"),
+            positive_length());
     add_cad_sandbox_options(*sub, common);
   }
 
@@ -186,7 +219,8 @@ int run(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     // one line, like every other error (CLI11's own would add a second)
-    fmt::print(stderr, "quadmesh: error: {} (see quadmesh --help)\n", e.what());
+    print_error(parse_error_line(e, app, {info_cmd, forms_cmd, mesh_cmd, quality_cmd, compare_cmd},
+                                 argc, argv));
     return exit_usage;
   }
   qm::io::CadSandbox& sandbox = qm::io::default_cad_sandbox();  // every read gets it
@@ -214,6 +248,9 @@ int run(int argc, char** argv) {
 int main(int argc, char** argv) {
   try {
     return run(argc, argv);
+  } catch (const UsageError& e) {  // a bad option value or output path
+    print_error(e.what());
+    return exit_usage;
   } catch (const qm::Error& e) {
     print_error(e.what());
     return exit_code_for(e.code());

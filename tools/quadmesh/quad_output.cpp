@@ -1,6 +1,5 @@
 #include "tools/quadmesh/quad_output.h"
 
-#include "io/atomic_file.h"
 #include "tools/common/quality_json.h"
 
 #include <fmt/format.h>
@@ -217,11 +216,11 @@ void print_summary(const MeshSummary& s) {
 }
 
 void write_report(const std::string& path, const MeshSummary& summary) {
-  io::write_atomically(path, [&](const std::string& temporary) {
-    std::ofstream out(temporary);
-    out << summary.report.dump(2) << '\n';
-    if (!out) throw Error(ErrorCode::bad_input, fmt::format("{}: cannot write the report", path));
-  });
+  std::ofstream out(path);
+  // a file name that is not UTF-8 (the input's) is written with U+FFFD, not refused
+  out << summary.report.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
+  out.close();  // the last buffer is written here: check after it
+  if (!out) throw Error(ErrorCode::bad_input, fmt::format("{}: cannot write the report", path));
 }
 
 }  // namespace qm::tools

@@ -31,6 +31,8 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
                       double seconds);
 
 void print_summary(const MeshSummary& summary);
+/// Writes the JSON report to `path` as it is (the caller makes it atomic, with
+/// the mesh); throws qm::Error(bad_input) if it cannot.
 void write_report(const std::string& path, const MeshSummary& summary);
 
 }  // namespace qm::tools
