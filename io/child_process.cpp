@@ -175,10 +175,11 @@ ChildResult run_in_child(const std::function<int()>& body, const ChildOptions& o
     prepare_child(log_fd, working_dir, options.memory_limit_bytes);
     prctl(PR_SET_PDEATHSIG, SIGKILL);  // no orphan left running if we are killed
     if (getppid() != parent) _exit(1);
-    if (options.crash_on_purpose) {
-      signal(SIGSEGV, SIG_DFL);
-      raise(SIGSEGV);
-    }
+    // a fault in the body ends the child by its signal, which the parent reports,
+    // whatever handlers this process had (a sanitizer's or a fuzzer's would
+    // otherwise turn it into an exit status, or write its own reports)
+    for (const int fatal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) signal(fatal, SIG_DFL);
+    if (options.crash_on_purpose) raise(SIGSEGV);
     int status = 1;
     try {
       status = body();
