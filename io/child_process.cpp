@@ -132,6 +132,19 @@ ChildResult wait_for_child(pid_t pid, Clock::time_point start, const ChildOption
   return result;
 }
 
+/// The parent's side of fork(): its copy of the log closed, then the wait, or why
+/// no child started.
+ChildResult after_fork(pid_t pid, int log_fd, Clock::time_point start, const ChildOptions& options) {
+  const int fork_error = errno;
+  if (log_fd >= 0) close(log_fd);
+  if (pid < 0) {
+    ChildResult result;
+    result.detail = fmt::format("could not start a process: {}", std::strerror(fork_error));
+    return result;
+  }
+  return wait_for_child(pid, start, options);
+}
+
 }  // namespace
 
 ChildResult run_child(const std::vector<std::string>& argv, const ChildOptions& options) {
@@ -152,13 +165,7 @@ ChildResult run_child(const std::vector<std::string>& argv, const ChildOptions& 
   if (pid == 0)
     become_child(pointers.data(), log_fd, working_dir, options.memory_limit_bytes,
                  options.crash_on_purpose);
-  if (log_fd >= 0) close(log_fd);
-  if (pid < 0) {
-    ChildResult result;
-    result.detail = fmt::format("could not start a process: {}", std::strerror(errno));
-    return result;
-  }
-  return wait_for_child(pid, start, options);
+  return after_fork(pid, log_fd, start, options);
 }
 
 ChildResult run_in_child(const std::function<int()>& body, const ChildOptions& options) {
@@ -187,13 +194,7 @@ ChildResult run_in_child(const std::function<int()>& body, const ChildOptions& o
     }
     _exit(status);
   }
-  if (log_fd >= 0) close(log_fd);
-  if (pid < 0) {
-    ChildResult result;
-    result.detail = fmt::format("could not start a process: {}", std::strerror(errno));
-    return result;
-  }
-  return wait_for_child(pid, start, options);
+  return after_fork(pid, log_fd, start, options);
 }
 
 std::string own_executable() {
