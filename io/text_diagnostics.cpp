@@ -67,10 +67,12 @@ std::optional<std::string> check_coordinates(const std::string& where,
 }
 
 /// The next line that is neither blank nor a '#' comment; false at the end.
+/// Blank means what split_tokens skips (a stream's white space, form feeds and
+/// vertical tabs too), so a content line always has a first token.
 bool next_content_line(std::istream& in, std::string& line, long& line_no) {
   while (std::getline(in, line)) {
     ++line_no;
-    const auto first = line.find_first_not_of(" \t\r");
+    const auto first = line.find_first_not_of(" \t\r\f\v");
     if (first == std::string::npos || line[first] == '#') continue;
     return true;
   }

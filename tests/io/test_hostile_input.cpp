@@ -591,3 +591,12 @@ TEST_CASE("defect 5: truncated files, huge indices, Inf and NaN in text formats"
   refused(write_bytes(dir, "short.stl", std::string(60, 'x')),
           "short.stl: 60 bytes is too short for a binary STL and it is not ASCII STL");
 }
+
+TEST_CASE("found by fuzz_read_off: a line of form feeds is blank, not a line without tokens") {
+  // the blank-line test skipped spaces, tabs and CRs, the tokenizer also form feeds
+  // and vertical tabs: "\f" passed as a content line with no first token, and the
+  // OFF and OBJ diagnoses read tokens[0] of an empty list (SIGSEGV in the program)
+  const std::string dir = test::scratch_dir("hostile_formfeed");
+  refused(write_bytes(dir, "ff.off", "\f\n\n#0\n\n\n\n3\f\f\f\f\f\f\f\f\f\f\f\f\f\f\f\f\ff"), "ff.off: line ");
+  refused(write_bytes(dir, "ff.obj", "\v\f\nv 0 0 0\n\f\nv 1 0 0\nv 0 1 0\n\v\nf 1 2\n"), "ff.obj: line ");
+}
