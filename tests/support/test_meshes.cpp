@@ -39,6 +39,15 @@ std::string five_hole_plate_geo() {
          "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:6}; Delete; }\n";
 }
 
+std::string long_arm_bracket_geo() {
+  return "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 200, 40};\n"
+         "Rectangle(100) = {100, 20, 0, 200, 40};\n"
+         "BooleanDifference{ Surface{1}; Delete; }{ Surface{100}; Delete; }\n"
+         "Disk(2) = {123.93, 10.68, 0, 3.53};\nDisk(3) = {24.34, 17.21, 0, 6.02};\n"
+         "Disk(4) = {78.69, 28.56, 0, 7.76};\n"
+         "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:4}; Delete; }\n";
+}
+
 std::string edge_hole_plate_geo() {
   return "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 150, 50, 10};\n"
          "Disk(2) = {122.11, 20.79, 0, 4.67};\nDisk(3) = {26.16, 42.26, 0, 3.11};\n"

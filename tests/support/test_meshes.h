@@ -25,6 +25,10 @@ std::string five_hole_plate_geo();
 /// were merged and the quads left a gap beside the hole; at 1.2% the quads'
 /// boundary still leaves the hole's.
 std::string edge_hole_plate_geo();
+/// A 200 x 40 CAD L-bracket with an arm 100 long and 20 wide and three holes
+/// (OpenCASCADE .geo text): every symmetric form decays along the arm, and the
+/// quads cannot conform (README Limits).
+std::string long_arm_bracket_geo();
 
 /// Planar annulus r0 <= |z| <= r1 with `rings` x `sectors` quads split in two
 /// (genus 0, 2 boundaries, chi 0).

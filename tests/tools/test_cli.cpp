@@ -238,13 +238,7 @@ TEST_CASE("mesh: an L-bracket with a long arm fails fast, naming the long end (a
   // exp(-pi x / 20) along it. One basis form was almost 0 along a hole and was
   // scaled a thousandfold to give that loop 4 edges: the lattice took 15 GB.
   const std::string dir = test::scratch_dir("cli_long_arm");
-  const std::string bracket = test::write_text(dir, "bracket.geo",
-      "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 200, 40};\n"
-      "Rectangle(100) = {100, 20, 0, 200, 40};\n"
-      "BooleanDifference{ Surface{1}; Delete; }{ Surface{100}; Delete; }\n"
-      "Disk(2) = {123.93, 10.68, 0, 3.53};\nDisk(3) = {24.34, 17.21, 0, 6.02};\n"
-      "Disk(4) = {78.69, 28.56, 0, 7.76};\n"
-      "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:4}; Delete; }\n");
+  const std::string bracket = test::write_text(dir, "bracket.geo", test::long_arm_bracket_geo());
   const std::string output = dir + "/out.msh";
   const Run run = quadmesh("mesh " + quoted(bracket) + " -o " + quoted(output) + " --size 1.5% -q");
   CHECK(run.status == 1);

@@ -254,13 +254,7 @@ TEST_CASE("README's exit-code table is what the program does: one real case per 
   const std::string kitten = quoted(test::shared_mesh("kitten-2holes.obj"));
   test::write_obj(test::disk(3, 12), dir + "/disk.obj");
   // a long arm: every form decays along it and the quads cannot conform (README Limits)
-  const std::string bracket = test::write_text(dir, "bracket.geo",
-      "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 200, 40};\n"
-      "Rectangle(100) = {100, 20, 0, 200, 40};\n"
-      "BooleanDifference{ Surface{1}; Delete; }{ Surface{100}; Delete; }\n"
-      "Disk(2) = {123.93, 10.68, 0, 3.53};\nDisk(3) = {24.34, 17.21, 0, 6.02};\n"
-      "Disk(4) = {78.69, 28.56, 0, 7.76};\n"
-      "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:4}; Delete; }\n");
+  const std::string bracket = test::write_text(dir, "bracket.geo", test::long_arm_bracket_geo());
   const std::string out = " -o " + quoted(dir + "/out.msh") + " -q";
   // per code: a word its meaning must have, and a run that must end with it
   const std::map<int, std::pair<std::string, std::string>> cases = {
