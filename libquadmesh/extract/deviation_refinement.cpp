@@ -1,10 +1,10 @@
 #include "libquadmesh/extract/deviation_refinement.h"
 
 #include "libquadmesh/core/error.h"
-#include "libquadmesh/extract/closest_location.h"
+#include "libquadmesh/extract/internal/closest_location.h"
 #include "libquadmesh/extract/quad_chords.h"
 #include "libquadmesh/quality/hausdorff.h"
-#include "libquadmesh/quality/triangle_tree.h"
+#include "libquadmesh/quality/internal/triangle_tree.h"
 #include "libquadmesh/quality/quad_quality.h"
 
 #include <algorithm>

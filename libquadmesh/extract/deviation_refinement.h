@@ -10,8 +10,8 @@
 
 #include "libquadmesh/core/triangle_soup.h"
 #include "libquadmesh/extract/lattice_quads.h"
-#include "libquadmesh/param/surface_adjacency.h"
-#include "libquadmesh/quality/triangle_tree.h"
+#include "libquadmesh/param/internal/surface_adjacency.h"
+#include "libquadmesh/quality/internal/triangle_tree.h"
 
 #include <array>
 #include <cstddef>

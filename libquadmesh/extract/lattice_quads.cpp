@@ -1,7 +1,7 @@
 #include "libquadmesh/extract/lattice_quads.h"
 
 #include "libquadmesh/core/error.h"
-#include "libquadmesh/core/union_find.h"
+#include "libquadmesh/core/internal/union_find.h"
 
 #include <algorithm>
 #include <cmath>

@@ -17,7 +17,7 @@
 #pragma once
 
 #include "libquadmesh/param/face_map.h"
-#include "libquadmesh/param/surface_adjacency.h"
+#include "libquadmesh/param/internal/surface_adjacency.h"
 #include "libquadmesh/quality/quad_quality.h"
 
 #include <array>

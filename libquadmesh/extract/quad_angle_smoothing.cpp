@@ -1,11 +1,11 @@
 #include "libquadmesh/extract/quad_angle_smoothing.h"
 
 #include "libquadmesh/core/error.h"
-#include "libquadmesh/extract/closest_location.h"
+#include "libquadmesh/extract/internal/closest_location.h"
 #include "libquadmesh/extract/deviation_refinement.h"
 #include "libquadmesh/extract/quad_smoothing.h"
 #include "libquadmesh/quality/quad_quality.h"
-#include "libquadmesh/quality/triangle_tree.h"
+#include "libquadmesh/quality/internal/triangle_tree.h"
 
 #include <Eigen/Geometry>
 

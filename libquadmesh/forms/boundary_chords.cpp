@@ -1,6 +1,6 @@
 #include "libquadmesh/forms/boundary_chords.h"
 
-#include "libquadmesh/topology/edge_incidence.h"
+#include "libquadmesh/topology/internal/edge_incidence.h"
 
 #include <vector>
 

@@ -2,7 +2,7 @@
 
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/forms/edge_forms.h"
-#include "libquadmesh/forms/spanning_tree.h"
+#include "libquadmesh/forms/internal/spanning_tree.h"
 
 #include <cmath>
 #include <queue>

@@ -1,7 +1,7 @@
 #include "libquadmesh/forms/long_edges.h"
 
 #include "libquadmesh/core/error.h"
-#include "libquadmesh/topology/edge_incidence.h"
+#include "libquadmesh/topology/internal/edge_incidence.h"
 
 #include <Eigen/Geometry>
 

@@ -1,6 +1,6 @@
 #include "libquadmesh/forms/named_loops.h"
 
-#include "libquadmesh/forms/spanning_tree.h"
+#include "libquadmesh/forms/internal/spanning_tree.h"
 
 #include <algorithm>
 #include <cmath>

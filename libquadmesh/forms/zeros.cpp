@@ -1,6 +1,6 @@
 #include "libquadmesh/forms/zeros.h"
 
-#include "libquadmesh/core/union_find.h"
+#include "libquadmesh/core/internal/union_find.h"
 #include "libquadmesh/forms/edge_forms.h"
 
 #include <cmath>

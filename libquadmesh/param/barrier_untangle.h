@@ -19,7 +19,7 @@
 #pragma once
 
 #include "libquadmesh/param/face_map.h"
-#include "libquadmesh/param/surface_adjacency.h"
+#include "libquadmesh/param/internal/surface_adjacency.h"
 #include "libquadmesh/param/untangle.h"
 
 namespace qm {

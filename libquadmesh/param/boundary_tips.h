@@ -16,7 +16,7 @@
 #pragma once
 
 #include "libquadmesh/param/face_map.h"
-#include "libquadmesh/param/surface_adjacency.h"
+#include "libquadmesh/param/internal/surface_adjacency.h"
 
 #include <Eigen/Core>
 

@@ -1,6 +1,6 @@
 #include "libquadmesh/param/map_zeros.h"
 
-#include "libquadmesh/core/union_find.h"
+#include "libquadmesh/core/internal/union_find.h"
 
 #include <Eigen/Geometry>
 #include <cmath>

@@ -10,7 +10,7 @@
 #pragma once
 
 #include "libquadmesh/param/face_map.h"
-#include "libquadmesh/param/surface_adjacency.h"
+#include "libquadmesh/param/internal/surface_adjacency.h"
 
 namespace qm {
 

@@ -28,7 +28,7 @@
 #pragma once
 
 #include "libquadmesh/param/face_map.h"
-#include "libquadmesh/param/surface_adjacency.h"
+#include "libquadmesh/param/internal/surface_adjacency.h"
 #include "libquadmesh/param/zero_stars.h"
 
 #include <string>

@@ -1,8 +1,8 @@
 #include "libquadmesh/param/zero_stars.h"
 
 #include "libquadmesh/core/error.h"
-#include "libquadmesh/core/union_find.h"
-#include "libquadmesh/param/surface_adjacency.h"
+#include "libquadmesh/core/internal/union_find.h"
+#include "libquadmesh/param/internal/surface_adjacency.h"
 
 #include <Eigen/Geometry>
 #include <cmath>

@@ -15,7 +15,7 @@
 #include <unordered_map>
 
 #include "libquadmesh/param/face_map.h"
-#include "libquadmesh/param/surface_adjacency.h"
+#include "libquadmesh/param/internal/surface_adjacency.h"
 
 namespace qm {
 

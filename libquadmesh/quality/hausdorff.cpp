@@ -1,7 +1,7 @@
 #include "libquadmesh/quality/hausdorff.h"
 
 #include "libquadmesh/core/error.h"
-#include "libquadmesh/quality/triangle_tree.h"
+#include "libquadmesh/quality/internal/triangle_tree.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #include "libquadmesh/quality/quad_quality.h"
 
 #include "libquadmesh/core/error.h"
-#include "libquadmesh/core/union_find.h"
+#include "libquadmesh/core/internal/union_find.h"
 #include "libquadmesh/quality/hausdorff.h"
 
 #include <Eigen/Geometry>

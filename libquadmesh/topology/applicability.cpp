@@ -1,6 +1,6 @@
 #include "libquadmesh/topology/applicability.h"
 
-#include "libquadmesh/topology/soup_cleaning.h"
+#include "libquadmesh/topology/internal/soup_cleaning.h"
 
 #include <fmt/format.h>
 

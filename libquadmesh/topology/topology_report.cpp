@@ -1,7 +1,7 @@
 #include "libquadmesh/topology/topology_report.h"
 
-#include "libquadmesh/topology/soup_cleaning.h"
-#include "libquadmesh/topology/vertex_fans.h"
+#include "libquadmesh/topology/internal/soup_cleaning.h"
+#include "libquadmesh/topology/internal/vertex_fans.h"
 
 namespace qm {
 

@@ -3,10 +3,10 @@
 // components, Euler characteristic and genus, and element-level defects.
 #pragma once
 
-#include "libquadmesh/topology/boundary_loops.h"
-#include "libquadmesh/topology/components.h"
-#include "libquadmesh/topology/coordinate_range.h"
-#include "libquadmesh/topology/orientation.h"
+#include "libquadmesh/topology/internal/boundary_loops.h"
+#include "libquadmesh/topology/internal/components.h"
+#include "libquadmesh/topology/internal/coordinate_range.h"
+#include "libquadmesh/topology/internal/orientation.h"
 
 #include <vector>
 

@@ -1,6 +1,6 @@
 // Longest-edge bisection of triangles wider than the quads (forms/long_edges.h).
 #include "libquadmesh/forms/long_edges.h"
-#include "libquadmesh/topology/edge_incidence.h"
+#include "libquadmesh/topology/internal/edge_incidence.h"
 #include "tests/support/test_meshes.h"
 
 #include <doctest/doctest.h>

@@ -3,7 +3,7 @@
 // onto it.
 #include "libquadmesh/extract/deviation_refinement.h"
 #include "libquadmesh/extract/quad_fitting.h"
-#include "libquadmesh/quality/triangle_tree.h"
+#include "libquadmesh/quality/internal/triangle_tree.h"
 #include "tests/support/grid_quads.h"
 #include "tests/support/test_meshes.h"
 

@@ -1,7 +1,7 @@
 // Topology of generated surfaces whose numbers are known by construction.
 #include "libquadmesh/core/mesh.h"
 #include "libquadmesh/topology/applicability.h"
-#include "libquadmesh/topology/soup_cleaning.h"
+#include "libquadmesh/topology/internal/soup_cleaning.h"
 #include "tests/support/test_meshes.h"
 
 #include <doctest/doctest.h>

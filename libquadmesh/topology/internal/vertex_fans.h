@@ -6,7 +6,7 @@
 // boundaries and bow-ties show up as points with two or more fans.
 #pragma once
 
-#include "libquadmesh/topology/edge_incidence.h"
+#include "libquadmesh/topology/internal/edge_incidence.h"
 
 #include <vector>
 

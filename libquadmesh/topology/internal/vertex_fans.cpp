@@ -1,6 +1,6 @@
-#include "libquadmesh/topology/vertex_fans.h"
+#include "libquadmesh/topology/internal/vertex_fans.h"
 
-#include "libquadmesh/core/union_find.h"
+#include "libquadmesh/core/internal/union_find.h"
 
 namespace qm {
 

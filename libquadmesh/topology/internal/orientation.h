@@ -6,7 +6,7 @@
 // the component is non-orientable (a Möbius strip, say).
 #pragma once
 
-#include "libquadmesh/topology/edge_incidence.h"
+#include "libquadmesh/topology/internal/edge_incidence.h"
 
 #include <vector>
 

@@ -1,4 +1,4 @@
-#include "libquadmesh/param/surface_adjacency.h"
+#include "libquadmesh/param/internal/surface_adjacency.h"
 
 #include "libquadmesh/core/error.h"
 

@@ -4,7 +4,7 @@
 
 #include "libquadmesh/core/triangle_soup.h"
 #include "libquadmesh/extract/lattice_quads.h"
-#include "libquadmesh/quality/triangle_tree.h"
+#include "libquadmesh/quality/internal/triangle_tree.h"
 
 #include <utility>
 

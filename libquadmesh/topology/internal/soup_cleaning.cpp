@@ -1,4 +1,4 @@
-#include "libquadmesh/topology/soup_cleaning.h"
+#include "libquadmesh/topology/internal/soup_cleaning.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 

@@ -1,4 +1,4 @@
-#include "libquadmesh/topology/edge_incidence.h"
+#include "libquadmesh/topology/internal/edge_incidence.h"
 
 #include <algorithm>
 #include <cstdint>

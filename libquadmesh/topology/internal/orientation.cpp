@@ -1,4 +1,4 @@
-#include "libquadmesh/topology/orientation.h"
+#include "libquadmesh/topology/internal/orientation.h"
 
 #include <queue>
 

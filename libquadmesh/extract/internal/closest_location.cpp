@@ -1,4 +1,4 @@
-#include "libquadmesh/extract/closest_location.h"
+#include "libquadmesh/extract/internal/closest_location.h"
 
 namespace qm {
 

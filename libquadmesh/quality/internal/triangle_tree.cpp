@@ -1,4 +1,4 @@
-#include "libquadmesh/quality/triangle_tree.h"
+#include "libquadmesh/quality/internal/triangle_tree.h"
 
 #include "libquadmesh/core/error.h"
 

@@ -8,7 +8,7 @@
 // left).
 #pragma once
 
-#include "libquadmesh/topology/vertex_fans.h"
+#include "libquadmesh/topology/internal/vertex_fans.h"
 
 #include <vector>
 

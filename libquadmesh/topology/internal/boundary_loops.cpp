@@ -1,6 +1,6 @@
-#include "libquadmesh/topology/boundary_loops.h"
+#include "libquadmesh/topology/internal/boundary_loops.h"
 
-#include "libquadmesh/core/union_find.h"
+#include "libquadmesh/core/internal/union_find.h"
 
 #include <array>
 

@@ -1,6 +1,6 @@
-#include "libquadmesh/topology/components.h"
+#include "libquadmesh/topology/internal/components.h"
 
-#include "libquadmesh/core/union_find.h"
+#include "libquadmesh/core/internal/union_find.h"
 
 #include <algorithm>
 

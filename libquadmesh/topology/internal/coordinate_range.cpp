@@ -1,4 +1,4 @@
-#include "libquadmesh/topology/coordinate_range.h"
+#include "libquadmesh/topology/internal/coordinate_range.h"
 
 #include <cmath>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "libquadmesh/forms/spanning_tree.h"
+#include "libquadmesh/forms/internal/spanning_tree.h"
 
 #include <queue>
 
