@@ -50,7 +50,7 @@ void prepare_child(int log_fd, const char* working_dir, std::uint64_t memory_lim
   sigprocmask(SIG_SETMASK, &none, nullptr);
   const rlimit no_core{0, 0};
   setrlimit(RLIMIT_CORE, &no_core);
-  if (memory_limit > 0) {
+  if (memory_limit > 0 && address_space_limits_work()) {
     rlimit as{};
     if (getrlimit(RLIMIT_AS, &as) == 0) {
       const rlim_t wanted = static_cast<rlim_t>(memory_limit);

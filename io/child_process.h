@@ -19,6 +19,24 @@ enum class ChildStatus {
   timeout,  ///< still running at the deadline: killed with SIGKILL
 };
 
+/// False in a build with AddressSanitizer (scripts/sanitize, scripts/fuzz): it
+/// reserves terabytes of address space as it starts, so an address-space limit
+/// would stop every child at once. There the children run with the time limit
+/// alone, and the tests that bound memory with `ulimit -v` leave the bound out.
+constexpr bool address_space_limits_work() {
+#if defined(__SANITIZE_ADDRESS__)
+  return false;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+  return false;
+#else
+  return true;
+#endif
+#else
+  return true;
+#endif
+}
+
 /// "ok", "failed", "crashed", "timeout" (the words of report.json).
 const char* status_name(ChildStatus status);
 
@@ -27,7 +45,8 @@ struct ChildOptions {
   std::string log_path;            ///< stdout and stderr go here; empty: /dev/null
   std::string working_dir;         ///< the child's working folder; empty: ours
   /// Address-space limit of the child (RLIMIT_AS), in bytes; 0: none. Never
-  /// raised above the limit this process already has.
+  /// raised above the limit this process already has. Not applied in a build
+  /// with AddressSanitizer (address_space_limits_work()).
   std::uint64_t memory_limit_bytes = 0;
   /// Test hook: the child raises SIGSEGV instead of running the program, as a
   /// crashing mesher would.

@@ -10,6 +10,7 @@
 #include "io/read_polygon_mesh.h"
 #include "io/read_surface.h"
 #include "libquadmesh/core/error.h"
+#include "tests/support/run_quadmesh.h"
 #include "tests/support/test_meshes.h"
 
 #include <doctest/doctest.h>
@@ -44,11 +45,12 @@ struct Run {
   std::string err;
 };
 
-/// `quadmesh ARGS` as `bash -c 'ulimit -v 1000000; timeout 60 quadmesh ARGS'`.
+/// `quadmesh ARGS` as `bash -c 'ulimit -v 1000000; timeout 60 quadmesh ARGS'`
+/// (without the ulimit under AddressSanitizer: test::address_space_bound).
 Run quadmesh_capped(const std::string& args) {
   static int counter = 0;
   const std::string dir = test::scratch_dir("hostile_run_" + std::to_string(counter++));
-  const std::string inner = std::string("ulimit -v 1000000; timeout 60 '") + QM_QUADMESH_BIN +
+  const std::string inner = test::address_space_bound(1000000) + "timeout 60 '" + QM_QUADMESH_BIN +
                             "' " + args + " >/dev/null 2>'" + dir + "/err' </dev/null";
   const std::string command = "bash -c \"" + inner + "\"";
   const int raw = std::system(command.c_str());

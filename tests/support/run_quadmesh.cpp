@@ -1,5 +1,6 @@
 #include "tests/support/run_quadmesh.h"
 
+#include "io/child_process.h"
 #include "tests/support/test_meshes.h"
 
 #include <sys/wait.h>
@@ -28,6 +29,12 @@ std::string slurp(const std::string& path) {
 }
 
 std::string quoted(const std::string& path) { return "'" + path + "'"; }
+
+std::string address_space_bound(std::size_t kib) {
+  return io::address_space_limits_work() ? "ulimit -v " + std::to_string(kib) + "; " : "";
+}
+
+int sanitizer_slowdown() { return io::address_space_limits_work() ? 1 : 10; }
 
 Run shell_with_quadmesh(const std::string& command) {
   static int counter = 0;

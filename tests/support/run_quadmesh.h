@@ -24,5 +24,12 @@ Run quadmesh(const std::string& args);
 /// Runs a shell command line in which the word QUADMESH stands for the program
 /// (quoted): for limits (ulimit, timeout) around it.
 Run shell_with_quadmesh(const std::string& command);
+/// "ulimit -v KIB; ": a shell prefix that bounds the address space of what
+/// follows; empty in a build with AddressSanitizer, which needs terabytes of it
+/// (io::address_space_limits_work).
+std::string address_space_bound(std::size_t kib);
+/// How many times slower the program runs in this build: 10 with
+/// AddressSanitizer, else 1. Time limits the program is given (--timeout) scale by it.
+int sanitizer_slowdown();
 
 }  // namespace qm::test

@@ -157,8 +157,8 @@ TEST_CASE("work limit: a size or count that implies too many quads is refused in
   for (const std::string& request : {"--size 1e-9%", "--size 1e-7", "--quads 100000000"}) {
     CAPTURE(request);
     const auto start = std::chrono::steady_clock::now();
-    const Run run = test::shell_with_quadmesh("ulimit -v 2000000; timeout 60 QUADMESH mesh " + kitten + " -o " + out +
-                                              " " + request);
+    const Run run = test::shell_with_quadmesh(test::address_space_bound(2000000) + "timeout 60 QUADMESH mesh " +
+                                              kitten + " -o " + out + " " + request);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     expect_one_error(run, 2, "more than --max-quads 5000000");
     CHECK(run.error_lines()[0].find("raise --max-quads") != std::string::npos);
@@ -168,7 +168,7 @@ TEST_CASE("work limit: a size or count that implies too many quads is refused in
   // Gmsh was meshing the plate at 0.001 for minutes before any estimate
   {
     const auto start = std::chrono::steady_clock::now();
-    const Run cad = test::shell_with_quadmesh("ulimit -v 2000000; timeout 60 QUADMESH mesh " +
+    const Run cad = test::shell_with_quadmesh(test::address_space_bound(2000000) + "timeout 60 QUADMESH mesh " +
                                               quoted(test::example("plate-two-holes.geo")) + " -o " + out +
                                               " --size 0.001");
     expect_one_error(cad, 2, "--size 0.001 implies about ");
@@ -181,8 +181,8 @@ TEST_CASE("work limit: a size or count that implies too many quads is refused in
   expect_one_error(quadmesh("mesh " + kitten + " -o " + out + " --quads 50 --max-quads 40"), 2,
                    "--quads 50 is more than --max-quads 40");
   // forms --remesh-size: the triangles it implies
-  const Run remesh = test::shell_with_quadmesh("ulimit -v 2000000; timeout 60 QUADMESH forms " + kitten +
-                                               " --remesh-size 1e-6");
+  const Run remesh = test::shell_with_quadmesh(test::address_space_bound(2000000) + "timeout 60 QUADMESH forms " +
+                                               kitten + " --remesh-size 1e-6");
   expect_one_error(remesh, 2, "--remesh-size 1e-06 implies about ");
   CHECK(remesh.error_lines()[0].find("more than --max-triangles 5000000") != std::string::npos);
   CHECK_FALSE(fs::exists(dir + "/out.msh"));

@@ -1,5 +1,6 @@
 // quadmesh compare: the child-process runner, and the tool as a user runs it:
 // every method is a row, and a method that crashes is a row, not a failure.
+#include "tests/support/run_quadmesh.h"
 #include "tests/support/test_meshes.h"
 #include "tools/compare/child_process.h"
 
@@ -175,7 +176,8 @@ TEST_CASE("a method that outlives --timeout is a `timeout` row, killed; the tool
       << "#!/bin/sh\n[ \"$1\" = --version ] && { echo 0.0-slow >&2; exit 0; }\nsleep 60\n";
   std::filesystem::permissions(fake, std::filesystem::perms::owner_all);
   const std::string out = dir + "/report";
-  CHECK(compare("", "'" + dir + "/annulus.obj' --size 10% --timeout 2 --gmsh '" + fake + "'",
+  const std::string timeout = std::to_string(2 * test::sanitizer_slowdown());  // under the fake's 60 s
+  CHECK(compare("", "'" + dir + "/annulus.obj' --size 10% --timeout " + timeout + " --gmsh '" + fake + "'",
                 out) == 0);
   const auto j = check_report(out);
   CHECK(j["gmsh_version"] == "0.0-slow");
