@@ -321,6 +321,12 @@ TEST_CASE("--largest-component proceeds with the largest piece") {
   for (const Triangle& t : small.triangles)
     soup.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
   test::write_obj(soup, dir + "/pieces.obj");
+  // without it: refused (exit 4), with the remedy said as the flag, not as the
+  // library's largest_component()
+  const Run refused = quadmesh("mesh " + quoted(dir + "/pieces.obj") + " -o " + quoted(dir + "/out.msh"));
+  CHECK(refused.status == 4);
+  REQUIRE(refused.error_lines().size() == 1);
+  CHECK(refused.error_lines()[0].find("keep the largest (--largest-component)") != std::string::npos);
   const Run info = quadmesh("info --json --largest-component " + quoted(dir + "/pieces.obj"));
   CHECK(info.status == 0);
   const auto j = nlohmann::json::parse(info.out);
