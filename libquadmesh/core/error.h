@@ -11,6 +11,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace qm {
 
@@ -21,13 +22,22 @@ enum class ErrorCode {
 };
 
 /// A data-dependent failure. what() is one line that names the problem and where.
+/// A failure caused by the value of an option names the option in what() by its
+/// struct field ("QuadMeshOptions::form"; a function such as
+/// "largest_component()" when that is the remedy), and `option()` returns that
+/// same name, so that a tool can say it its own way (a command-line flag). Indices
+/// in such messages count from 0, as the field does.
 class Error : public std::runtime_error {
  public:
-  Error(ErrorCode code, const std::string& message) : std::runtime_error(message), code_(code) {}
+  Error(ErrorCode code, const std::string& message, std::string option = {})
+      : std::runtime_error(message), code_(code), option_(std::move(option)) {}
   ErrorCode code() const { return code_; }
+  /// The option what() names, spelled as in what(); empty when none.
+  const std::string& option() const { return option_; }
 
  private:
   ErrorCode code_;
+  std::string option_;
 };
 
 /// A broken precondition: a bug in the caller, never a property of the input.

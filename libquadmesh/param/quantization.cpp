@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <queue>
 #include <unordered_map>
@@ -21,6 +22,15 @@ namespace {
 
 /// Image radius (lattice units) of the disk that moves rigidly with each cone.
 constexpr double disk_radius = 0.75;
+
+/// The disk's model blends into the target from this fraction of its radius on
+/// (smoothstep of (rho - blend_start) / blend_width, rho = image distance / radius).
+constexpr double blend_start = 0.25;
+constexpr double blend_width = 1.0 - blend_start;
+
+/// Rule 4: a period or level farther than this from 0 (lattice units) is not rounded
+/// to 0, and levels farther apart than this stay distinct.
+constexpr double collapse_threshold = 0.25;
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
@@ -219,7 +229,7 @@ ConeDisk cone_disk(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, 
     // a corner's whole disk is the target translated (the target's image angle at a
     // corner is already pi and not folded: it needs no bending there)
     const double rho = std::abs(reach[order[k]]) / radius;
-    double beta = cone.corner ? 1.0 : k < star ? 0.0 : std::clamp((rho - 0.25) / 0.75, 0.0, 1.0);
+    double beta = cone.corner ? 1.0 : k < star ? 0.0 : std::clamp((rho - blend_start) / blend_width, 0.0, 1.0);
     beta = beta * beta * (3 - 2 * beta);
     disk.vertices.push_back(order[k]);
     disk.model.push_back((1 - beta) * a * W[k] + beta * reach[order[k]]);
@@ -232,7 +242,7 @@ ConeDisk cone_disk(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, 
 
 double round_nonzero(double x) {
   const double r = std::round(x);
-  if (r == 0 && std::abs(x) > 0.25) return x > 0 ? 1.0 : -1.0;
+  if (r == 0 && std::abs(x) > collapse_threshold) return x > 0 ? 1.0 : -1.0;
   return r;
 }
 
@@ -246,12 +256,12 @@ std::vector<double> round_levels(const std::vector<double>& levels) {
   // order): least squared rounding with every level >= the one before, and > when
   // they differ by more than 1/4
   constexpr int span = 3;
-  std::vector<std::vector<double>> cost(n, std::vector<double>(2 * span + 1, 1e300));
+  std::vector<std::vector<double>> cost(n, std::vector<double>(2 * span + 1, std::numeric_limits<double>::max()));
   std::vector<std::vector<int>> from(n, std::vector<int>(2 * span + 1, -1));
   auto candidate = [&](std::size_t i, int c) { return std::round(levels[order[i]]) + (c - span); };
   for (int c = 0; c <= 2 * span; ++c) cost[0][static_cast<std::size_t>(c)] = std::pow(candidate(0, c) - levels[order[0]], 2);
   for (std::size_t i = 1; i < n; ++i) {
-    const bool apart = levels[order[i]] - levels[order[i - 1]] > 0.25;
+    const bool apart = levels[order[i]] - levels[order[i - 1]] > collapse_threshold;
     for (int c = 0; c <= 2 * span; ++c)
       for (int p = 0; p <= 2 * span; ++p) {
         const double here = candidate(i, c), there = candidate(i - 1, p);
@@ -325,52 +335,68 @@ FaceMap integrate_cut(const TriangleSoup& soup, const SurfaceAdjacency& adjacenc
   return out;
 }
 
-Quantization quantize(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
-                      const FaceMap& target, const std::vector<FaceMap>& basis,
-                      const std::vector<ZeroVertex>& zeros, const PeriodLoops& loops) {
-  QM_ASSERT(!loops.boundaries.empty() && !basis.empty());
-  const std::size_t nF = soup.triangles.size(), nV = soup.points.size();
-  const Eigen::Index K = static_cast<Eigen::Index>(basis.size());
-  Quantization q;
+namespace {
 
-  // 1. periods of T and of the basis on the loops of H_1(S)
-  struct Loop {
-    std::string name;
-    const std::vector<int>* path;
-  };
-  std::vector<Loop> u_loops, v_loops;
+/// A loop whose period is rounded, named for the report.
+struct NamedPath {
+  std::string name;
+  const std::vector<int>* path;
+};
+
+/// The period correction of step 1-2: xi = T + C, with C = sum_k e_k Re(h_k) +
+/// i d_k Im(h_k) giving xi integer periods on the handle and boundary loops.
+struct PeriodCorrection {
+  FaceMap C;   ///< xi - T
+  FaceMap xi;  ///< the target with integer periods
+};
+
+/// Least-squares coefficients of the basis that move the periods of `target` on
+/// `list` (real or imaginary parts) to their rounding (round_nonzero), appended to
+/// `rounded`.
+Eigen::VectorXd period_coefficients(const SurfaceAdjacency& adjacency, const FaceMap& target,
+                                    const std::vector<FaceMap>& basis, const std::vector<NamedPath>& list,
+                                    bool imaginary, std::vector<double>& rounded) {
+  const Eigen::Index K = static_cast<Eigen::Index>(basis.size());
+  const Eigen::Index n = static_cast<Eigen::Index>(list.size());
+  Eigen::VectorXd coefficients = Eigen::VectorXd::Zero(K);
+  if (n == 0) return coefficients;
+  Eigen::MatrixXd M(n, K);
+  Eigen::VectorXd delta(n);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const auto& path = *list[static_cast<std::size_t>(j)].path;
+    for (Eigen::Index k = 0; k < K; ++k) {
+      const Complex p = path_integral(adjacency, basis[static_cast<std::size_t>(k)], path, true);
+      M(j, k) = imaginary ? p.imag() : p.real();
+    }
+    const Complex p = path_integral(adjacency, target, path, true);
+    const double value = imaginary ? p.imag() : p.real();
+    rounded.push_back(round_nonzero(value));
+    delta[j] = rounded.back() - value;
+  }
+  coefficients = M.completeOrthogonalDecomposition().solve(delta);
+  return coefficients;
+}
+
+/// Steps 1 and 2: the periods of T and of the basis on the loops of H_1(S), and
+/// xi = T + the corrections; the rounded periods as they came out go to q.periods.
+PeriodCorrection correct_periods(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                 const FaceMap& target, const std::vector<FaceMap>& basis,
+                                 const PeriodLoops& loops, Quantization& q) {
+  const std::size_t nF = soup.triangles.size();
+  const Eigen::Index K = static_cast<Eigen::Index>(basis.size());
+  std::vector<NamedPath> u_loops, v_loops;
   for (std::size_t i = 0; i < loops.handles.size(); ++i) {
     u_loops.push_back({fmt::format("handle_{}", i), &loops.handles[i]});
     v_loops.push_back(u_loops.back());
   }
   for (std::size_t k = 1; k < loops.boundaries.size(); ++k)
     u_loops.push_back({fmt::format("boundary_{}", k), &loops.boundaries[k]});
-  auto correction = [&](const std::vector<Loop>& list, bool imaginary, std::vector<double>& rounded) {
-    const Eigen::Index n = static_cast<Eigen::Index>(list.size());
-    Eigen::VectorXd coefficients = Eigen::VectorXd::Zero(K);
-    if (n == 0) return coefficients;
-    Eigen::MatrixXd M(n, K);
-    Eigen::VectorXd delta(n);
-    for (Eigen::Index j = 0; j < n; ++j) {
-      const auto& path = *list[static_cast<std::size_t>(j)].path;
-      for (Eigen::Index k = 0; k < K; ++k) {
-        const Complex p = path_integral(adjacency, basis[static_cast<std::size_t>(k)], path, true);
-        M(j, k) = imaginary ? p.imag() : p.real();
-      }
-      const Complex p = path_integral(adjacency, target, path, true);
-      const double value = imaginary ? p.imag() : p.real();
-      rounded.push_back(round_nonzero(value));
-      delta[j] = rounded.back() - value;
-    }
-    coefficients = M.completeOrthogonalDecomposition().solve(delta);
-    return coefficients;
-  };
   std::vector<double> u_rounded, v_rounded;
-  const Eigen::VectorXd e = correction(u_loops, false, u_rounded);
-  const Eigen::VectorXd d = correction(v_loops, true, v_rounded);
+  const Eigen::VectorXd e = period_coefficients(adjacency, target, basis, u_loops, false, u_rounded);
+  const Eigen::VectorXd d = period_coefficients(adjacency, target, basis, v_loops, true, v_rounded);
 
-  // 2. xi = T + corrections, and C = xi - T
-  FaceMap C;
+  PeriodCorrection out;
+  FaceMap& C = out.C;
   C.corners.assign(nF, CornerValues{});
   for (Eigen::Index k = 0; k < K; ++k)
     for (std::size_t f = 0; f < nF; ++f)
@@ -378,24 +404,34 @@ Quantization quantize(const TriangleSoup& soup, const SurfaceAdjacency& adjacenc
         const Complex b = basis[static_cast<std::size_t>(k)].corners[f][i];
         C.corners[f][i] += Complex(e[k] * b.real(), d[k] * b.imag());
       }
-  FaceMap xi = target;
+  out.xi = target;
   for (std::size_t f = 0; f < nF; ++f)
-    for (int i = 0; i < 3; ++i) xi.corners[f][i] += C.corners[f][i];
+    for (int i = 0; i < 3; ++i) out.xi.corners[f][i] += C.corners[f][i];
   // the rounded periods as they came out (exact integers up to round-off)
   for (std::size_t j = 0; j < u_loops.size(); ++j) {
     const Complex before = path_integral(adjacency, target, *u_loops[j].path, true);
-    const Complex after = path_integral(adjacency, xi, *u_loops[j].path, true);
+    const Complex after = path_integral(adjacency, out.xi, *u_loops[j].path, true);
     q.periods.push_back({u_loops[j].name, before, after});
   }
+  return out;
+}
 
-  const int base = loops.boundaries[0].front();
-  const FaceMap Xi = integrate_cut(soup, adjacency, xi, base);
-
-  // 3. Dirichlet values of psi
+/// Step 3's state: the Dirichlet values of psi (U and V) and the cones.
+struct DirichletValues {
   std::map<int, double> fixed_u, fixed_v;
-  std::vector<int> loop_of(nV, -1);
+  std::vector<int> loop_of;          ///< per vertex: its boundary loop, or -1
+  std::vector<char> is_cone;         ///< per vertex
+  std::vector<char> constrained;     ///< per vertex: 1 a cone, 2 in a cone's disk
+  std::vector<const ZeroVertex*> cones;  ///< the zeros, then the corners kept
+  std::unordered_map<int, double> boundary_zero_psi;  ///< U-psi of each boundary zero
+};
+
+/// Rule 2: V constant on each boundary loop, the loops' levels (the V-integrals of
+/// the bridges) rounded together (round_levels); the bridges' periods go to q.periods.
+void fix_boundary_levels(const SurfaceAdjacency& adjacency, const FaceMap& target, const FaceMap& xi,
+                         const PeriodLoops& loops, DirichletValues& dv, Quantization& q) {
   for (std::size_t k = 0; k < loops.boundaries.size(); ++k)
-    for (int v : loops.boundaries[k]) loop_of[static_cast<std::size_t>(v)] = static_cast<int>(k);
+    for (int v : loops.boundaries[k]) dv.loop_of[static_cast<std::size_t>(v)] = static_cast<int>(k);
   std::vector<double> level(loops.boundaries.size(), 0.0);
   for (std::size_t k = 1; k < loops.boundaries.size(); ++k)
     level[k] = path_integral(adjacency, xi, loops.bridges[k - 1], false).imag();
@@ -407,40 +443,37 @@ Quantization quantize(const TriangleSoup& soup, const SurfaceAdjacency& adjacenc
                          Complex(0, path_integral(adjacency, target, loops.bridges[k - 1], false).imag()),
                          Complex(0, rounded[k])});
   }
-  for (std::size_t v = 0; v < nV; ++v)
-    if (loop_of[v] >= 0) fixed_v[static_cast<int>(v)] = shift[static_cast<std::size_t>(loop_of[v])];
+  for (std::size_t v = 0; v < dv.loop_of.size(); ++v)
+    if (dv.loop_of[v] >= 0) dv.fixed_v[static_cast<int>(v)] = shift[static_cast<std::size_t>(dv.loop_of[v])];
+}
 
-  auto lattice = [&](int v) {  // psi making v a lattice point (chart independent)
-    const Complex x = value_at(soup, adjacency, Xi, v);
-    return Complex(std::round(x.real()) - x.real(), std::round(x.imag()) - x.imag());
-  };
-  // cones: the zeros, then the corners that do not share a lattice point with the
-  // cone met before them along their loop
-  std::vector<char> is_cone(nV, 0), constrained(nV, 0);
-  std::vector<const ZeroVertex*> cones;
+/// The cones: the zeros, then the corners that do not share a lattice point with
+/// the cone met before them along their loop. Consecutive zeros along a loop take
+/// distinct integers U (the boundary arc between them is monotone in U and would
+/// collapse): a zero that would round onto the one before it takes the next integer
+/// in the direction of travel.
+void choose_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const FaceMap& xi,
+                  const FaceMap& Xi, const std::vector<ZeroVertex>& zeros, const PeriodLoops& loops,
+                  DirichletValues& dv, Quantization& q) {
   std::unordered_map<int, const ZeroVertex*> corner_at;
   for (const ZeroVertex& z : zeros) {
     if (z.corner) {
       corner_at[z.vertex] = &z;
       continue;
     }
-    cones.push_back(&z);
-    is_cone[static_cast<std::size_t>(z.vertex)] = 1;
+    dv.cones.push_back(&z);
+    dv.is_cone[static_cast<std::size_t>(z.vertex)] = 1;
   }
-  // consecutive zeros along a loop take distinct integers U (the boundary arc
-  // between them is monotone in U and would collapse): a zero that would round
-  // onto the one before it takes the next integer in the direction of travel
-  std::unordered_map<int, double> boundary_zero_psi;
   for (const auto& loop : loops.boundaries) {
     double position = value_at(soup, adjacency, Xi, loop.front()).real();
     double last_lattice = std::nan(""), last_position = 0;
     for (std::size_t i = 0; i < loop.size(); ++i) {
       const int v = loop[i];
       if (i > 0) position += edge_value(adjacency, xi, loop[i - 1], v).real();
-      if (is_cone[static_cast<std::size_t>(v)]) {
+      if (dv.is_cone[static_cast<std::size_t>(v)]) {
         double u = std::round(position);
         if (u == last_lattice) u += position >= last_position ? 1 : -1;
-        boundary_zero_psi[v] = u - position;
+        dv.boundary_zero_psi[v] = u - position;
         last_lattice = u;
         last_position = position;
         continue;
@@ -451,42 +484,51 @@ Quantization quantize(const TriangleSoup& soup, const SurfaceAdjacency& adjacenc
         ++q.corners_dropped;
         continue;
       }
-      cones.push_back(corner->second);
-      is_cone[static_cast<std::size_t>(v)] = 1;
+      dv.cones.push_back(corner->second);
+      dv.is_cone[static_cast<std::size_t>(v)] = 1;
       last_lattice = std::round(position);
       last_position = position;
       ++q.corners;
     }
   }
-  // each cone on its lattice point with the local model on its star, then on the
-  // rest of a disk around it; a corner in the star of a cone before it stays free
+}
+
+/// Rule 3: each cone on its lattice point with the local model on its star, then
+/// on the rest of a disk around it; a corner in the star of a cone before it stays
+/// free.
+void place_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const FaceMap& xi,
+                 const FaceMap& Xi, DirichletValues& dv, Quantization& q) {
+  auto lattice = [&](int v) {  // psi making v a lattice point (chart independent)
+    const Complex x = value_at(soup, adjacency, Xi, v);
+    return Complex(std::round(x.real()) - x.real(), std::round(x.imag()) - x.imag());
+  };
   std::vector<const ZeroVertex*> placed;
   std::vector<Complex> placed_psi, placed_a;
   auto apply = [&](const ConeDisk& disk, Complex psi_cone, std::size_t from, std::size_t to) {
     for (std::size_t k = from; k < to; ++k) {
       const int v = disk.vertices[k];
-      if (constrained[static_cast<std::size_t>(v)]) continue;
+      if (dv.constrained[static_cast<std::size_t>(v)]) continue;
       const Complex psi = psi_cone + disk.model[k] - disk.target[k];
-      fixed_u[v] = psi.real();
-      if (loop_of[static_cast<std::size_t>(v)] < 0) fixed_v[v] = psi.imag();
-      constrained[static_cast<std::size_t>(v)] = 2;
+      dv.fixed_u[v] = psi.real();
+      if (dv.loop_of[static_cast<std::size_t>(v)] < 0) dv.fixed_v[v] = psi.imag();
+      dv.constrained[static_cast<std::size_t>(v)] = 2;
     }
   };
-  for (const ZeroVertex* z : cones) {
-    if (z->corner && constrained[static_cast<std::size_t>(z->vertex)]) {
+  for (const ZeroVertex* z : dv.cones) {
+    if (z->corner && dv.constrained[static_cast<std::size_t>(z->vertex)]) {
       --q.corners;
       ++q.corners_dropped;
       continue;
     }
     Complex lattice_psi = lattice(z->vertex);
-    if (const auto it = boundary_zero_psi.find(z->vertex); it != boundary_zero_psi.end())
+    if (const auto it = dv.boundary_zero_psi.find(z->vertex); it != dv.boundary_zero_psi.end())
       lattice_psi.real(it->second);
-    fixed_u[z->vertex] = lattice_psi.real();
-    if (!z->on_boundary) fixed_v[z->vertex] = lattice_psi.imag();
-    constrained[static_cast<std::size_t>(z->vertex)] = 1;
+    dv.fixed_u[z->vertex] = lattice_psi.real();
+    if (!z->on_boundary) dv.fixed_v[z->vertex] = lattice_psi.imag();
+    dv.constrained[static_cast<std::size_t>(z->vertex)] = 1;
     if (!z->corner) ++q.lattice_zeros;
-    const Complex psi_cone(lattice_psi.real(), fixed_v[z->vertex]);
-    const ConeDisk disk = cone_disk(soup, adjacency, xi, *z, constrained, nullptr);
+    const Complex psi_cone(lattice_psi.real(), dv.fixed_v[z->vertex]);
+    const ConeDisk disk = cone_disk(soup, adjacency, xi, *z, dv.constrained, nullptr);
     apply(disk, psi_cone, 0, disk.star);
     placed.push_back(z);
     placed_psi.push_back(psi_cone);
@@ -497,16 +539,19 @@ Quantization quantize(const TriangleSoup& soup, const SurfaceAdjacency& adjacenc
     // (a vertex of two disks would follow the cone met first, and the other cone's
     // star would sit in a translated neighbourhood: folds)
     double radius = disk_radius;
-    const auto cone_at = [&](int v) { return is_cone[static_cast<std::size_t>(v)] != 0; };
+    const auto cone_at = [&](int v) { return dv.is_cone[static_cast<std::size_t>(v)] != 0; };
     for (const auto& [v, d] : image_ball(soup, adjacency, xi, placed[c]->vertex, 2 * disk_radius, cone_at))
       if (v != placed[c]->vertex && cone_at(v)) radius = std::min(radius, 0.5 * d);
-    const ConeDisk disk = cone_disk(soup, adjacency, xi, *placed[c], constrained, &placed_a[c], radius);
+    const ConeDisk disk = cone_disk(soup, adjacency, xi, *placed[c], dv.constrained, &placed_a[c], radius);
     apply(disk, placed_psi[c], 0, disk.vertices.size());
   }
-  if (fixed_u.empty()) fixed_u[base] = 0.0;
-  q.fixed_vertices = fixed_u.size() + fixed_v.size();
+}
 
-  // 4. two sparse solves
+/// Step 4: psi by two sparse solves, Phi = Xi + psi, and the distortion and flips
+/// of the result.
+void solve_psi(const TriangleSoup& soup, const FaceMap& target, const FaceMap& C, const FaceMap& Xi,
+               const DirichletValues& dv, Quantization& q) {
+  const std::size_t nF = soup.triangles.size();
   std::vector<std::array<double, 3>> weights(nF), cu(nF), cv(nF);
   for (std::size_t f = 0; f < nF; ++f) {
     weights[f] = corner_weights(soup, soup.triangles[f]);
@@ -515,8 +560,8 @@ Quantization quantize(const TriangleSoup& soup, const SurfaceAdjacency& adjacenc
       cv[f][static_cast<std::size_t>(i)] = C.corners[f][i].imag();
     }
   }
-  const Eigen::VectorXd psi_u = dirichlet_solve(soup, weights, cu, fixed_u, "U");
-  const Eigen::VectorXd psi_v = dirichlet_solve(soup, weights, cv, fixed_v, "V");
+  const Eigen::VectorXd psi_u = dirichlet_solve(soup, weights, cu, dv.fixed_u, "U");
+  const Eigen::VectorXd psi_v = dirichlet_solve(soup, weights, cv, dv.fixed_v, "V");
 
   q.param = Xi;
   double change = 0, reference = 0;
@@ -533,6 +578,32 @@ Quantization quantize(const TriangleSoup& soup, const SurfaceAdjacency& adjacenc
     if (image_area2(q.param.corners[f]) <= 0) ++q.flipped;
   }
   q.distortion = reference > 0 ? change / reference : 0.0;
+}
+
+}  // namespace
+
+Quantization quantize(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                      const FaceMap& target, const std::vector<FaceMap>& basis,
+                      const std::vector<ZeroVertex>& zeros, const PeriodLoops& loops) {
+  QM_ASSERT(!loops.boundaries.empty() && !basis.empty());
+  const std::size_t nV = soup.points.size();
+  Quantization q;
+  // 1-2. periods rounded: xi = T + C
+  const PeriodCorrection corrected = correct_periods(soup, adjacency, target, basis, loops, q);
+  const int base = loops.boundaries[0].front();
+  const FaceMap Xi = integrate_cut(soup, adjacency, corrected.xi, base);
+  // 3. Dirichlet values of psi: boundary levels, then the cones
+  DirichletValues dv;
+  dv.loop_of.assign(nV, -1);
+  dv.is_cone.assign(nV, 0);
+  dv.constrained.assign(nV, 0);
+  fix_boundary_levels(adjacency, target, corrected.xi, loops, dv, q);
+  choose_cones(soup, adjacency, corrected.xi, Xi, zeros, loops, dv, q);
+  place_cones(soup, adjacency, corrected.xi, Xi, dv, q);
+  if (dv.fixed_u.empty()) dv.fixed_u[base] = 0.0;
+  q.fixed_vertices = dv.fixed_u.size() + dv.fixed_v.size();
+  // 4. two sparse solves
+  solve_psi(soup, target, corrected.C, Xi, dv, q);
   return q;
 }
 

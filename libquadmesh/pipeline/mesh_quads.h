@@ -13,6 +13,7 @@
 #include "libquadmesh/param/map_zeros.h"
 #include "libquadmesh/param/quantization.h"
 #include "libquadmesh/param/untangle.h"
+#include "libquadmesh/pipeline/acceptance_criteria.h"
 
 #include <functional>
 #include <string>
@@ -58,6 +59,10 @@ struct QuadMeshOptions {
   /// Where triangles wider than the quads cover 5% of the area, also mesh the input
   /// split by longest-edge bisection and keep the better result (forms/long_edges.h).
   bool split_long_edges = true;
+  /// What a sound, well-shaped result is: the attempts are ranked by it
+  /// (pipeline/internal/candidate_ranking.h), and a coarser base lattice bought for
+  /// the size adaptivity must keep its Jacobian floor.
+  AcceptanceCriteria acceptance;
 };
 
 struct QuadMeshResult {
@@ -71,7 +76,7 @@ struct QuadMeshResult {
   Eigen::VectorXd coefficients;  ///< h = sum c_k h_k (unit vector), before rotation
   std::size_t boundary_tips = 0;  ///< boundary tips the auto form was asked to vanish at (tip_angle_deg)
   int form_attempts = 1;         ///< forms tried (auto tries the basis forms while folds, dropped cells or a wrong topology are left)
-  int rounding_attempts = 0;     ///< the form rounded again at other scales (the quads were faulty: mesh_quads.cpp)
+  int rounding_attempts = 0;     ///< the form rounded again at other scales (the quads were faulty: pipeline/internal/retry_policy.h)
   double uniformity = 0;         ///< R(c) of form_choice.h (1 = uniform |h|)
   double scale = 0;              ///< s: the grid is the integer lattice of s h
   double size = 0;               ///< the target edge length that s implies

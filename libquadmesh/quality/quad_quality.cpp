@@ -20,6 +20,10 @@ namespace {
 constexpr double kDegrees = 180.0 / 3.14159265358979323846;
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+/// What a quad's corners deviate from, and what a boundary point's faces should
+/// span its corner angle sum in.
+constexpr double kRightAngleDeg = 90.0;
+
 double angle_between_deg(const Vec3& a, const Vec3& b) {
   // atan2 keeps full precision near 0 and 180 degrees, where acos does not
   return std::atan2(a.cross(b).norm(), a.dot(b)) * kDegrees;
@@ -235,22 +239,29 @@ QuadShapeSamples quad_shape_samples(const PolygonMesh& mesh) {
     if (face.size() != 4) continue;
     const QuadPoints c = quad_points(mesh, face);
     const std::array<Vec3, 4> n = corner_normals(c, quad_ids(face), normals);
-    double consistency = std::numeric_limits<double>::infinity();
+    s.verdict.push_back(quad_verdict(c));
+    // sound: as sound_scaled_jacobian computes it (Verdict's, then each corner's cap)
+    double consistency = std::numeric_limits<double>::infinity(), sound = s.verdict.back().scaled_jacobian;
     for (std::size_t k = 0; k < 4; ++k) {
       const Vec3& prev = c[(k + 3) % 4];
       const Vec3& next = c[(k + 1) % 4];
-      consistency = std::min(consistency, corner_scaled_jacobian(prev, c[k], next, n[k]));
-      s.angle_deviation_deg.push_back(std::abs(corner_angle_deg(prev, c[k], next) - 90.0));
+      const double corner = corner_scaled_jacobian(prev, c[k], next, n[k]);
+      consistency = std::min(consistency, corner);
+      sound = std::min(sound, corner);
+      s.angle_deviation_deg.push_back(std::abs(corner_angle_deg(prev, c[k], next) - kRightAngleDeg));
     }
-    s.verdict.push_back(quad_verdict(c));
     s.scaled_jacobian.push_back(s.verdict.back().scaled_jacobian);
     s.normal_consistency.push_back(consistency);
+    s.sound_scaled_jacobian.push_back(sound);
   }
   return s;
 }
 
-QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference) {
-  QuadQuality q;
+namespace {
+
+/// Face counts by corner count; returns the first global corner id of each face
+/// (and the corner count after the last).
+std::vector<int> count_faces(const PolygonMesh& mesh, QuadQuality& q) {
   const std::size_t point_count = mesh.points.size();
   std::vector<int> first_corner(mesh.faces.size() + 1, 0);
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
@@ -267,9 +278,11 @@ QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference)
     else
       ++q.other_faces;
   }
-  const auto point = [&](int v) -> const Vec3& { return mesh.points[static_cast<std::size_t>(v)]; };
+  return first_corner;
+}
 
-  // ---- per quad: Verdict figures, normal consistency, corner angles
+/// Per quad: Verdict figures, normal consistency, sound scaled Jacobian, corner angles.
+void measure_quad_shapes(const PolygonMesh& mesh, QuadQuality& q) {
   const QuadShapeSamples samples = quad_shape_samples(mesh);
   const auto figure = [&](double QuadVerdict::*field) {
     std::vector<double> values;
@@ -287,6 +300,7 @@ QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference)
   q.mean_scaled_jacobian = mean(jacobians);
   q.p01_scaled_jacobian = percentile(jacobians, 0.01);
   q.min_normal_consistency = min_of(samples.normal_consistency);
+  q.min_sound_scaled_jacobian = min_of(samples.sound_scaled_jacobian);
   q.min_angle = min_of(figure(&QuadVerdict::minimum_angle));
   q.max_angle = max_of(figure(&QuadVerdict::maximum_angle));
   const std::vector<double> warpages = figure(&QuadVerdict::warpage);
@@ -308,8 +322,11 @@ QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference)
       angle_devs.empty() ? kNaN : std::sqrt(squares / static_cast<double>(angle_devs.size()));
   q.angle_dev_p99 = percentile(angle_devs, 0.99);
   q.angle_dev_max = max_of(angle_devs);
+}
 
-  // ---- per triangle: Verdict figures
+/// Per triangle: Verdict figures.
+void measure_triangle_shapes(const PolygonMesh& mesh, QuadQuality& q) {
+  const auto point = [&](int v) -> const Vec3& { return mesh.points[static_cast<std::size_t>(v)]; };
   std::vector<TriangleVerdict> triangle_figures;
   for (const std::vector<int>& face : mesh.faces)
     if (face.size() == 3) triangle_figures.push_back(triangle_verdict({point(face[0]), point(face[1]), point(face[2])}));
@@ -322,15 +339,28 @@ QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference)
   q.triangle_min_angle = min_of(triangle_figure(&TriangleVerdict::minimum_angle));
   q.triangle_max_angle = max_of(triangle_figure(&TriangleVerdict::maximum_angle));
   q.triangle_aspect_ratio_max = max_of(triangle_figure(&TriangleVerdict::aspect_ratio));
+}
 
-  // ---- edges, fans, topology
-  const EdgeTable table = build_edges(mesh, first_corner);
+/// The edges and, per point, whether it is on the boundary and its face corners.
+struct Connectivity {
+  EdgeTable table;
+  std::vector<char> on_boundary;
+  std::vector<std::vector<int>> corners_of_point;
+};
+
+/// Edges, fans and topology: manifoldness, orientation, vertex count, Euler
+/// characteristic, boundary loops.
+Connectivity measure_topology(const PolygonMesh& mesh, const std::vector<int>& first_corner, QuadQuality& q) {
+  const std::size_t point_count = mesh.points.size();
+  Connectivity c;
+  c.table = build_edges(mesh, first_corner);
+  const EdgeTable& table = c.table;
   UnionFind fans(static_cast<std::size_t>(first_corner.back()));
-  std::vector<char> on_boundary(point_count, 0);
+  c.on_boundary.assign(point_count, 0);
   for (const EdgeRecord& e : table.edges) {
     if (e.uses > 2) q.manifold = false;
     if (e.uses == 1)
-      on_boundary[static_cast<std::size_t>(e.a)] = on_boundary[static_cast<std::size_t>(e.b)] = 1;
+      c.on_boundary[static_cast<std::size_t>(e.a)] = c.on_boundary[static_cast<std::size_t>(e.b)] = 1;
     if (e.uses == 2) {
       if (e.uses_a_to_b != 1) q.consistently_oriented = false;
       fans.unite(e.corners_a[0], e.corners_a[1]);
@@ -338,45 +368,55 @@ QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference)
     }
   }
   // corners per point; the fans of a point are the distinct roots of its corners
-  std::vector<std::vector<int>> corners_of_point(point_count);
+  c.corners_of_point.resize(point_count);
   for (std::size_t f = 0; f < mesh.faces.size(); ++f)
-    for (std::size_t c = 0; c < mesh.faces[f].size(); ++c)
-      corners_of_point[static_cast<std::size_t>(mesh.faces[f][c])].push_back(first_corner[f] +
-                                                                             static_cast<int>(c));
-  for (const std::vector<int>& corners : corners_of_point) {
+    for (std::size_t k = 0; k < mesh.faces[f].size(); ++k)
+      c.corners_of_point[static_cast<std::size_t>(mesh.faces[f][k])].push_back(first_corner[f] +
+                                                                               static_cast<int>(k));
+  for (const std::vector<int>& corners : c.corners_of_point) {
     if (corners.empty()) continue;
     ++q.vertices;
     const int root = fans.find(corners[0]);
-    for (int c : corners)
-      if (fans.find(c) != root) q.manifold = false;
+    for (int corner : corners)
+      if (fans.find(corner) != root) q.manifold = false;
   }
   q.euler_characteristic = static_cast<int>(q.vertices) - static_cast<int>(table.edges.size()) +
                            static_cast<int>(mesh.faces.size());
   q.boundary_loops = count_boundary_loops(table, fans);
+  return c;
+}
 
-  // ---- valences
+/// Valences against the regular grid.
+void measure_valences(const PolygonMesh& mesh, const Connectivity& c, QuadQuality& q) {
+  const auto point = [&](int v) -> const Vec3& { return mesh.points[static_cast<std::size_t>(v)]; };
+  const std::size_t point_count = mesh.points.size();
   std::vector<double> angle_sum(point_count, 0.0);
   for (const std::vector<int>& face : mesh.faces) {
     const std::size_t n = face.size();
-    for (std::size_t c = 0; c < n; ++c)
-      angle_sum[static_cast<std::size_t>(face[c])] +=
-          corner_angle_deg(point(face[(c + n - 1) % n]), point(face[c]), point(face[(c + 1) % n]));
+    for (std::size_t k = 0; k < n; ++k)
+      angle_sum[static_cast<std::size_t>(face[k])] +=
+          corner_angle_deg(point(face[(k + n - 1) % n]), point(face[k]), point(face[(k + 1) % n]));
   }
   for (std::size_t v = 0; v < point_count; ++v) {
-    if (corners_of_point[v].empty()) continue;
-    if (on_boundary[v]) {
-      const int faces = static_cast<int>(corners_of_point[v].size());
+    if (c.corners_of_point[v].empty()) continue;
+    if (c.on_boundary[v]) {
+      const int faces = static_cast<int>(c.corners_of_point[v].size());
       ++q.valence_boundary[faces];
-      const int ideal = std::max(1, static_cast<int>(std::lround(angle_sum[v] / 90.0)));
+      const int ideal = std::max(1, static_cast<int>(std::lround(angle_sum[v] / kRightAngleDeg)));
       if (faces != ideal) ++q.irregular_boundary;
     } else {
-      const int edges = static_cast<int>(table.edges_of_vertex[v].size());
+      const int edges = static_cast<int>(c.table.edges_of_vertex[v].size());
       ++q.valence_interior[edges];
       if (edges != 4) ++q.irregular_interior;
     }
   }
+}
 
-  // ---- edge lengths
+/// Edge lengths, and the alignment of the interior edges at the boundary against
+/// the tangent prev -> next.
+void measure_edges(const PolygonMesh& mesh, const Connectivity& c, QuadQuality& q) {
+  const auto point = [&](int v) -> const Vec3& { return mesh.points[static_cast<std::size_t>(v)]; };
+  const EdgeTable& table = c.table;
   std::vector<double> lengths;
   lengths.reserve(table.edges.size());
   for (const EdgeRecord& e : table.edges)
@@ -385,10 +425,9 @@ QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference)
   q.edge_length_mean = mean(lengths);
   q.edge_length_max = max_of(lengths);
 
-  // ---- boundary alignment: interior edges against the tangent prev -> next
   std::vector<double> alignment;
-  for (std::size_t v = 0; v < point_count; ++v) {
-    if (!on_boundary[v]) continue;
+  for (std::size_t v = 0; v < mesh.points.size(); ++v) {
+    if (!c.on_boundary[v]) continue;
     std::vector<int> neighbours;
     for (int e : table.edges_of_vertex[v]) {
       const EdgeRecord& r = table.edges[static_cast<std::size_t>(e)];
@@ -401,41 +440,55 @@ QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference)
       const EdgeRecord& r = table.edges[static_cast<std::size_t>(e)];
       if (r.uses != 2) continue;
       const Vec3 edge = point(r.a == static_cast<int>(v) ? r.b : r.a) - mesh.points[v];
-      alignment.push_back(std::abs(angle_between_deg(edge, tangent) - 90.0));
+      alignment.push_back(std::abs(angle_between_deg(edge, tangent) - kRightAngleDeg));
     }
   }
   q.boundary_alignment_mean = mean(alignment);
   q.boundary_alignment_max = max_of(alignment);
+}
 
-  // ---- Hausdorff distance to the reference
+/// Two-sided Hausdorff distance to the reference (NaN without one).
+void measure_hausdorff(const PolygonMesh& mesh, const TriangleSoup* reference, QuadQuality& q) {
   q.hausdorff_rel = q.hausdorff_forward_rel = q.hausdorff_backward_rel = kNaN;
-  if (reference != nullptr) {
-    std::vector<Triangle> split;  // fans from corner 0: quads along the diagonal 0-2
-    for (const std::vector<int>& face : mesh.faces)
-      for (std::size_t i = 1; i + 1 < face.size(); ++i)
-        split.push_back({face[0], face[i], face[i + 1]});
-    std::vector<Vec3> samples = surface_samples(mesh.points, split);
-    for (const std::vector<int>& face : mesh.faces) {
-      if (face.size() == 3) continue;  // the triangle's centroid is already a sample
-      Vec3 centroid = Vec3::Zero();
-      for (int v : face)
-        centroid += point(v);
-      samples.push_back(centroid / static_cast<double>(face.size()));
-    }
-    const FarthestSample forward = farthest_sample(samples, reference->points, reference->triangles);
-    const FarthestSample backward =
-        farthest_sample(surface_samples(reference->points, reference->triangles), mesh.points, split);
-    HausdorffDistance h;
-    h.forward = forward.distance;
-    h.backward = backward.distance;
-    q.hausdorff_at = h.forward >= h.backward ? forward.point : backward.point;
-    const double diagonal = bounding_box_diagonal(reference->points, reference->triangles);
-    if (diagonal > 0) {
-      q.hausdorff_forward_rel = h.forward / diagonal;
-      q.hausdorff_backward_rel = h.backward / diagonal;
-      q.hausdorff_rel = h.value() / diagonal;
-    }
+  if (reference == nullptr) return;
+  std::vector<Triangle> split;  // fans from corner 0: quads along the diagonal 0-2
+  for (const std::vector<int>& face : mesh.faces)
+    for (std::size_t i = 1; i + 1 < face.size(); ++i)
+      split.push_back({face[0], face[i], face[i + 1]});
+  std::vector<Vec3> samples = surface_samples(mesh.points, split);
+  for (const std::vector<int>& face : mesh.faces) {
+    if (face.size() == 3) continue;  // the triangle's centroid is already a sample
+    Vec3 centroid = Vec3::Zero();
+    for (int v : face)
+      centroid += mesh.points[static_cast<std::size_t>(v)];
+    samples.push_back(centroid / static_cast<double>(face.size()));
   }
+  const FarthestSample forward = farthest_sample(samples, reference->points, reference->triangles);
+  const FarthestSample backward =
+      farthest_sample(surface_samples(reference->points, reference->triangles), mesh.points, split);
+  HausdorffDistance h;
+  h.forward = forward.distance;
+  h.backward = backward.distance;
+  q.hausdorff_at = h.forward >= h.backward ? forward.point : backward.point;
+  const double diagonal = bounding_box_diagonal(reference->points, reference->triangles);
+  if (diagonal > 0) {
+    q.hausdorff_forward_rel = h.forward / diagonal;
+    q.hausdorff_backward_rel = h.backward / diagonal;
+    q.hausdorff_rel = h.value() / diagonal;
+  }
+}
+
+}  // namespace
+
+QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference) {
+  QuadQuality q;
+  const std::vector<int> first_corner = count_faces(mesh, q);
+  measure_quad_shapes(mesh, q);
+  measure_triangle_shapes(mesh, q);
+  const Connectivity connectivity = measure_topology(mesh, first_corner, q);
+  measure_valences(mesh, connectivity, q);
+  measure_edges(mesh, connectivity, q);
+  measure_hausdorff(mesh, reference, q);
   return q;
 }
 

@@ -59,6 +59,10 @@ struct QuadQuality {
   /// against the mesh's vertex normals (corner_scaled_jacobian), <= 0 for a quad
   /// turned over against its neighbours. Not a Verdict figure.
   double min_normal_consistency = 0;
+  /// Smallest sound_scaled_jacobian over the quads: the Verdict scaled Jacobian
+  /// capped by the normal consistency, quad by quad (<= both minima above). What the
+  /// pipeline's acceptance criteria hold the quads to (pipeline/acceptance_criteria.h).
+  double min_sound_scaled_jacobian = 0;
 
   // Verdict figures of the triangles left in the mesh (NaN without triangles)
   double triangle_min_scaled_jacobian = 0;  ///< smallest (no sign in 3D: [0, 1])
@@ -110,6 +114,7 @@ struct QuadShapeSamples {
   std::vector<QuadVerdict> verdict;          ///< per quad: its Verdict figures
   std::vector<double> scaled_jacobian;       ///< per quad: Verdict scaled Jacobian (<= 0: inverted)
   std::vector<double> normal_consistency;    ///< per quad: min corner scaled Jacobian against the vertex normals
+  std::vector<double> sound_scaled_jacobian; ///< per quad: sound_scaled_jacobian (the two above combined)
   std::vector<double> angle_deviation_deg;   ///< per quad corner: |angle - 90|, degrees
 };
 

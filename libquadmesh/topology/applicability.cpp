@@ -72,7 +72,7 @@ Applicability assess_applicability(const AnalyzedSurface& surface) {
   if (r.components.count > 1)
     return refuse(SurfaceCase::several_components, ErrorCode::unsupported,
                   fmt::format("{} connected components (the largest has {} of {} triangles): mesh "
-                              "one surface at a time, or pass --largest-component",
+                              "one surface at a time, or keep the largest (largest_component())",
                               r.components.count,
                               r.components.triangle_counts[r.components.largest()], r.faces));
   if (!r.orientation.orientable)
@@ -117,7 +117,8 @@ Applicability assess_applicability(const AnalyzedSurface& surface) {
 
 void require_supported(const AnalyzedSurface& surface) {
   const Applicability a = assess_applicability(surface);
-  if (!a.supported) throw Error(a.code, a.reason);
+  if (!a.supported)
+    throw Error(a.code, a.reason, a.kind == SurfaceCase::several_components ? "largest_component()" : "");
 }
 
 AnalyzedSurface largest_component(const AnalyzedSurface& surface) {

@@ -6,6 +6,7 @@
 #include "libquadmesh/param/form_choice.h"
 #include "libquadmesh/param/rounding_scale.h"
 #include "libquadmesh/param/surface_forms.h"
+#include "libquadmesh/pipeline/acceptance_criteria.h"
 #include "libquadmesh/pipeline/mesh_quads.h"
 #include "libquadmesh/quality/hausdorff.h"
 #include "libquadmesh/quality/quad_quality.h"
@@ -50,8 +51,9 @@ void check_result(const TriangleSoup& input, const QuadMeshResult& r, int chi, i
   CHECK(q.consistently_oriented);
   CHECK(q.euler_characteristic == chi);
   CHECK(q.boundary_loops == loops);
-  CHECK(q.min_scaled_jacobian >= 0.3);
-  CHECK(q.angle_dev_mean <= 5.0);
+  const AcceptanceCriteria criteria;
+  CHECK(q.min_scaled_jacobian >= criteria.min_scaled_jacobian);
+  CHECK(q.angle_dev_mean <= criteria.max_mean_angle_deviation_deg);
   CHECK(r.extraction.incomplete_cells == 0);
   CHECK(r.extraction.bad_triangles == 0);
   CHECK(r.stray_boundary_points == 0);
@@ -146,7 +148,7 @@ TEST_CASE("curved shell with two holes (CAD): two boundary zeros on the small ho
   CHECK(boundary_zeros == 2);
   CHECK(r.extraction.degenerate_cells == 0);
   const QuadQuality q = quad_quality(polygon_mesh(r.quads), &input);
-  CHECK(q.hausdorff_rel < 0.01);
+  CHECK(q.hausdorff_rel < AcceptanceCriteria{}.max_hausdorff_relative);
 }
 
 TEST_CASE("CAD plates that had gaps: branch points off the lattice, overlapping corner disks") {
@@ -194,7 +196,7 @@ TEST_CASE("CAD plates that had gaps: branch points off the lattice, overlapping 
     CHECK(r.quantization.corners == 4);
     check_result(input, r, plate.chi, plate.loops);
     CHECK(r.extraction.degenerate_cells == 0);
-    CHECK(quad_quality(polygon_mesh(r.quads), &input).hausdorff_rel < 0.01);
+    CHECK(quad_quality(polygon_mesh(r.quads), &input).hausdorff_rel < AcceptanceCriteria{}.max_hausdorff_relative);
   }
 }
 
@@ -211,7 +213,7 @@ TEST_CASE("two boundary zeros of a hole beside a narrow part stay on distinct la
   options.size_relative = 0.015;
   const QuadMeshResult r = mesh_quads(input, options);
   check_result(input, r, -5, 7);
-  CHECK(quad_quality(polygon_mesh(r.quads), &input).hausdorff_rel < 0.01);
+  CHECK(quad_quality(polygon_mesh(r.quads), &input).hausdorff_rel < AcceptanceCriteria{}.max_hausdorff_relative);
   // every boundary zero, as the final map has them, sits on a lattice point
   // (before: one of the pair at U = 18.92)
   std::size_t boundary_zeros = 0;
@@ -273,7 +275,7 @@ TEST_CASE("pig: the folds near its cones are untangled, the extraction drops no 
   CHECK(refined.refinement.rounds_undone > 0);
   CHECK(refined.refinement.chords_split > 0);
   const QuadQuality qr = quad_quality(polygon_mesh(refined.quads), nullptr);
-  CHECK(qr.min_scaled_jacobian >= std::min(q.min_scaled_jacobian, 0.3));
+  CHECK(qr.min_scaled_jacobian >= std::min(q.min_scaled_jacobian, AcceptanceCriteria{}.min_scaled_jacobian));
 }
 
 TEST_CASE("flatmesh: triangles wider than the quads are split, and the better of the two meshes kept") {
@@ -320,7 +322,7 @@ TEST_CASE("fertility: corners moved onto its extremities bring the quads within 
   CHECK(r.fitting.moved_points > 0);
   CHECK(r.fitting.deviation_after < 0.6 * r.fitting.deviation_before);
   const QuadQuality q = quad_quality(polygon_mesh(r.quads), &input);
-  CHECK(q.hausdorff_rel < 0.01);
+  CHECK(q.hausdorff_rel < AcceptanceCriteria{}.max_hausdorff_relative);
 }
 
 TEST_CASE("aqua-center: splitting chords brings the quads within the tolerance, singular vertices unchanged") {
@@ -348,7 +350,7 @@ TEST_CASE("aqua-center: splitting chords brings the quads within the tolerance, 
   CHECK(r.refinement.deviation_after <= r.max_deviation);
   // the estimate agrees with the quality module's two-sided Hausdorff distance
   CHECK(q.hausdorff_rel * diagonal == doctest::Approx(r.refinement.deviation_after).epsilon(0.1));
-  CHECK(q.hausdorff_rel < 0.01);
+  CHECK(q.hausdorff_rel < AcceptanceCriteria{}.max_hausdorff_relative);
   // the quad count stays within 15% of the target
   CHECK(std::abs(static_cast<double>(q.quads) - r.expected_quads) <= 0.15 * r.expected_quads);
   CHECK(q.irregular_interior == q0.irregular_interior);
@@ -360,8 +362,8 @@ TEST_CASE("bunny at 1.5%: smoothing the worst quads lifts the minimum scaled Jac
   QuadMeshOptions options;
   options.size_relative = 0.015;
   const QuadMeshResult r = mesh_quads(input, options);
-  CHECK(r.smoothing.min_before < 0.3);
-  CHECK(r.smoothing.min_after >= 0.3);
+  CHECK(r.smoothing.min_before < AcceptanceCriteria{}.min_scaled_jacobian);
+  CHECK(r.smoothing.min_after >= AcceptanceCriteria{}.min_scaled_jacobian);
   CHECK(r.smoothing.moved_points > 0);
   const QuadQuality q = quad_quality(polygon_mesh(r.quads), nullptr);
   // the fitting and the angle smoothing after it keep their quads' figure at

@@ -4,6 +4,7 @@
 #include "tools/common/exit_codes.h"
 #include "tools/common/usage_error.h"
 #include "tools/quadmesh/commands.h"
+#include "tools/quadmesh/library_wording.h"
 #include "tools/quadmesh/option_checks.h"
 
 #include <CLI/CLI.hpp>
@@ -43,7 +44,7 @@ void add_cad_sandbox_options(CLI::App& app, CommonOptions& common) {
 
 void print_error(const std::string& message) noexcept {
   try {
-    fmt::print(stderr, "quadmesh: error: {}\n", message);
+    fmt::print(stderr, "quadmesh: error: {}\n", command_line_wording(message));
   } catch (
       ...) {  // stderr unwritable (a full disk, a file size limit): the exit status still says it
   }

@@ -109,6 +109,12 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
                    {"euler_characteristic", s.input_euler_characteristic},
                    {"boundary_loops", s.input_boundary_loops},
                    {"quads", result.expected_quads}};
+  // the thresholds the quads are judged by (the command line meshes with the
+  // defaults): scripts and tests read them from here
+  const AcceptanceCriteria criteria;
+  j["acceptance"] = {{"min_scaled_jacobian", criteria.min_scaled_jacobian},
+                     {"max_mean_angle_deviation_deg", criteria.max_mean_angle_deviation_deg},
+                     {"max_hausdorff_relative", criteria.max_hausdorff_relative}};
   j["form"] = {{"coefficients", std::vector<double>(result.coefficients.data(),
                                                      result.coefficients.data() + result.coefficients.size())},
                {"rotate", options.rotate},

@@ -1,5 +1,7 @@
 #include "tools/quadmesh/topology_summary.h"
 
+#include "tools/quadmesh/library_wording.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -112,7 +114,7 @@ nlohmann::ordered_json topology_json(const InputSurface& in, const Applicability
   j["physical_curves"] = groups;
   j["supported"] = verdict.supported;
   j["case"] = case_name(verdict.kind);
-  j["reason"] = verdict.reason;
+  j["reason"] = command_line_wording(verdict.reason);
   j["doubled_genus"] =
       verdict.doubled_genus >= 0 ? nlohmann::ordered_json(verdict.doubled_genus) : nlohmann::ordered_json(nullptr);
   return j;
@@ -171,7 +173,7 @@ std::string topology_text(const InputSurface& in, const Applicability& verdict) 
   if (!in.surface.soup.cad.groups.empty())
     line("cad", fmt::format("{} physical curve groups, {} edges on CAD curves",
                             in.surface.soup.cad.groups.size(), in.surface.soup.cad.edges.size()));
-  line("verdict", verdict.reason);
+  line("verdict", command_line_wording(verdict.reason));
   return out;
 }
 

@@ -1,0 +1,124 @@
+#include "libquadmesh/pipeline/internal/form_setup.h"
+
+#include "libquadmesh/core/error.h"
+#include "libquadmesh/forms/boundary_chords.h"
+#include "libquadmesh/forms/remesh.h"
+#include "libquadmesh/param/boundary_tips.h"
+#include "libquadmesh/param/surface_forms.h"
+#include "libquadmesh/quality/hausdorff.h"
+
+#include <Eigen/Geometry>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace qm {
+
+namespace {
+
+/// RemeshPolicy::automatic remeshes when ||Lambda^2 + I|| exceeds this on the
+/// input (the forms are then inaccurate).
+constexpr double max_hodge_star_residual = 0.1;
+
+/// The automatic remeshing's edge length: this fraction of the mean edge...
+constexpr double remesh_mean_edge_fraction = 0.4;
+/// ...or this fraction of the quad edge, whichever is smaller.
+constexpr double remesh_quads_per_edge = 3.0;
+
+double surface_area(const TriangleSoup& soup) {
+  double area = 0;
+  for (const Triangle& t : soup.triangles)
+    area += 0.5 * (soup.points[static_cast<std::size_t>(t[1])] - soup.points[static_cast<std::size_t>(t[0])])
+                      .cross(soup.points[static_cast<std::size_t>(t[2])] - soup.points[static_cast<std::size_t>(t[0])])
+                      .norm();
+  return area;
+}
+
+/// The coefficients of h the options ask for (QuadMeshOptions::coefficients or
+/// ::form), or auto's: the most uniform form with zeros at the boundary tips (and
+/// the one without them in setup.free_coefficients).
+void choose_coefficients(const QuadMeshOptions& options, FormSetup& setup) {
+  QuadMeshResult& r = setup.preamble;
+  const int G = static_cast<int>(setup.basis.size());
+  if (!options.coefficients.empty()) {
+    if (static_cast<int>(options.coefficients.size()) != G)
+      throw Error(ErrorCode::bad_input,
+                  fmt::format("QuadMeshOptions::coefficients has {} values but the surface has {} symmetric forms",
+                              options.coefficients.size(), G),
+                  "QuadMeshOptions::coefficients");
+    r.coefficients = Eigen::Map<const Eigen::VectorXd>(options.coefficients.data(), G);
+    if (r.coefficients.norm() == 0)
+      throw Error(ErrorCode::bad_input, "QuadMeshOptions::coefficients: all coefficients are 0",
+                  "QuadMeshOptions::coefficients");
+    r.coefficients.normalize();
+  } else if (options.form >= 0) {
+    if (options.form >= G)
+      throw Error(ErrorCode::bad_input,
+                  fmt::format("QuadMeshOptions::form = {}: the surface has {} symmetric forms (0 to {})",
+                              options.form, G, G - 1),
+                  "QuadMeshOptions::form");
+    r.coefficients = Eigen::VectorXd::Unit(G, options.form);
+  } else {
+    const TipChoice choice = most_uniform_with_tips(setup.soup, surface_adjacency(setup.soup), setup.basis,
+                                                    options.tip_angle_deg * M_PI / 180.0);
+    r.boundary_tips = choice.tips.size();
+    r.coefficients = choice.coefficients;
+    if (!choice.tips.empty()) setup.free_coefficients = choice.free_coefficients;
+  }
+}
+
+}  // namespace
+
+RequestedSize requested_size(const TriangleSoup& soup, const QuadMeshOptions& options) {
+  const double diagonal = bounding_box_diagonal(soup.points, soup.triangles);
+  RequestedSize r;
+  r.size = options.size > 0            ? options.size
+           : options.size_relative > 0 ? options.size_relative * diagonal
+                                       : diagonal / default_size_divisions;
+  r.edge = options.quads > 0 ? std::sqrt(surface_area(soup) / static_cast<double>(options.quads)) : r.size;
+  return r;
+}
+
+FormSetup prepare_forms(TriangleSoup soup, const QuadMeshOptions& options, Stages& stages) {
+  FormSetup setup;
+  QuadMeshResult& r = setup.preamble;
+  setup.area = surface_area(soup);
+  setup.diagonal = bounding_box_diagonal(soup.points, soup.triangles);
+  const RequestedSize requested = requested_size(soup, options);
+  r.size_requested = requested.size;
+  auto remesh = [&](TriangleSoup& s) {
+    RemeshOptions remesh_options;
+    remesh_options.target_edge_length =
+        options.remesh_size > 0
+            ? options.remesh_size
+            : std::min(remesh_mean_edge_fraction * mean_edge_length(s), requested.edge / remesh_quads_per_edge);
+    stages.next("remeshing", fmt::format("remeshing isotropically (edge length {:.4g})",
+                                         remesh_options.target_edge_length));
+    s = remesh_isotropic(s, remesh_options);
+    r.remeshed = true;
+  };
+  if (options.remesh == RemeshPolicy::always) remesh(soup);
+  stages.next("forms", "computing symmetric holomorphic forms");
+  r.chords_split = split_boundary_chords(soup);
+  SymmetricForms forms = compute_symmetric_forms(to_surface_mesh(soup));
+  r.input_hodge_star_squared = forms.residuals.hodge_star_squared;
+  if (options.remesh == RemeshPolicy::automatic && forms.residuals.hodge_star_squared > max_hodge_star_residual) {
+    remesh(soup);
+    stages.next("forms", fmt::format("computing the forms again (||Lambda^2 + I|| was {:.3g})",
+                                      r.input_hodge_star_squared));
+    r.chords_split += split_boundary_chords(soup);
+    forms = compute_symmetric_forms(to_surface_mesh(soup));
+  }
+  r.doubled_genus = forms.doubled_genus;
+  r.residuals = forms.residuals;
+  setup.basis = symmetric_face_maps(forms, soup);
+  setup.soup = std::move(soup);
+
+  stages.next("form_choice", "choosing the form");
+  choose_coefficients(options, setup);
+  setup.loops = period_loops(setup.soup);  // of S before any cone star is refined
+  return setup;
+}
+
+}  // namespace qm

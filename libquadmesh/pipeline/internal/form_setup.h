@@ -1,0 +1,30 @@
+// Before any attempt (method.md sections 1-4): the size the options ask for, the
+// remeshing when the forms need it, the symmetric forms, and the choice of h.
+#pragma once
+
+#include "libquadmesh/pipeline/internal/attempt.h"
+#include "libquadmesh/pipeline/internal/stages.h"
+#include "libquadmesh/pipeline/mesh_quads.h"
+
+namespace qm {
+
+/// The edge length the options ask for.
+struct RequestedSize {
+  double size = 0;  ///< QuadMeshOptions::size, or size_relative x the bounding-box diagonal, or
+                    ///< 1/default_size_divisions of it (QuadMeshResult::size_requested)
+  double edge = 0;  ///< what the quads should measure: with QuadMeshOptions::quads, the edge of a
+                    ///< square of area / quads; else `size`
+};
+
+/// Without a size, the quads measure this fraction of the bounding-box diagonal (1/60).
+inline constexpr double default_size_divisions = 60.0;
+
+RequestedSize requested_size(const TriangleSoup& soup, const QuadMeshOptions& options);
+
+/// Remeshes when asked (RemeshPolicy), computes the symmetric forms and chooses
+/// the coefficients of h: QuadMeshOptions::coefficients, ::form, or auto (the most
+/// uniform form, with zeros at the boundary tips). Throws qm::Error(bad_input)
+/// naming the option when coefficients or form do not fit the surface.
+FormSetup prepare_forms(TriangleSoup soup, const QuadMeshOptions& options, Stages& stages);
+
+}  // namespace qm

@@ -1,0 +1,41 @@
+#include "libquadmesh/pipeline/internal/quad_improvement.h"
+
+#include "libquadmesh/pipeline/internal/deviation_budget.h"
+
+namespace qm {
+
+namespace {
+
+/// The smoothing moves a corner at most this fraction of the requested size, and
+/// the angle smoothing keeps the quads within it of S when no tolerance is set.
+constexpr double max_move_fraction = 0.5;
+
+}  // namespace
+
+void improve_quads(QuadMeshResult& best, const QuadMeshOptions& options, Stages& stages) {
+  if (options.smoothing && !best.quads.quads.empty()) {
+    stages.next("smoothing", "smoothing the worst quads");
+    QuadSmoothingOptions smoothing;
+    smoothing.max_move = max_move_fraction * best.size_requested;
+    best.smoothing = smooth_worst_quads(best.surface, best.quads, best.boundary_loop_of_point, smoothing);
+  }
+  std::vector<char> fitted(best.quads.points.size(), 0);  // the corners the fitting moved stay
+  if (best.max_deviation > 0 && !best.quads.quads.empty() &&
+      best.refinement.deviation_after <= within_reach * best.max_deviation) {
+    stages.next("fitting", "moving corners onto S where the quads cut across it");
+    const std::vector<Vec3> before_fitting = best.quads.points;
+    QuadFittingOptions fitting;
+    fitting.tolerance = best.max_deviation;
+    best.fitting = fit_quads_to_surface(best.surface, best.quads, best.boundary_loop_of_point, fitting);
+    for (std::size_t v = 0; v < fitted.size(); ++v) fitted[v] = best.quads.points[v] != before_fitting[v];
+  }
+  if (options.smoothing && !best.quads.quads.empty()) {
+    stages.next("angle_smoothing", "moving quad corners towards right angles");
+    QuadAngleSmoothingOptions angles;
+    angles.max_move = max_move_fraction * best.size_requested;
+    angles.max_deviation = best.max_deviation > 0 ? best.max_deviation : max_move_fraction * best.size_requested;
+    best.angle_smoothing = smooth_quad_angles(best.surface, best.quads, best.boundary_loop_of_point, fitted, angles);
+  }
+}
+
+}  // namespace qm

@@ -1,0 +1,16 @@
+// After the quads are chosen and refined: their corners moved on S for shape and
+// fidelity (extract/quad_smoothing.h, quad_fitting.h, quad_angle_smoothing.h).
+#pragma once
+
+#include "libquadmesh/pipeline/internal/stages.h"
+#include "libquadmesh/pipeline/mesh_quads.h"
+
+namespace qm {
+
+/// Smooths the worst quads (QuadMeshOptions::smoothing), fits the corners onto S
+/// where the quads cut across it (when refined, and the deviation is within reach),
+/// then moves every regular interior corner towards right angles. The topology of
+/// `best.quads` does not change.
+void improve_quads(QuadMeshResult& best, const QuadMeshOptions& options, Stages& stages);
+
+}  // namespace qm
