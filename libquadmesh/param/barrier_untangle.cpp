@@ -9,9 +9,13 @@
 
 namespace qm {
 
+/// safely_positive's margin: twice the image area must exceed the longest image
+/// edge times this many units of the extraction's fixed-point lattice (2^-30 cells).
+constexpr double safe_area_units = 64;
+
 bool safely_positive(const CornerValues& c) {
   const double longest = std::max({std::abs(c[1] - c[0]), std::abs(c[2] - c[1]), std::abs(c[0] - c[2])});
-  return image_area2(c) > 64 * std::ldexp(1.0, -30) * longest;
+  return image_area2(c) > safe_area_units * std::ldexp(1.0, -30) * longest;
 }
 
 namespace {
