@@ -123,8 +123,12 @@ std::vector<double> quad_deviation(const TriangleTree& surface, const std::vecto
   return out;
 }
 
+/// S's vertices alone sample its side of the deviation where its mean edge is at
+/// most this fraction of the tolerance (deviation_samples()).
+constexpr double vertex_samples_edge_fraction = 0.5;
+
 std::vector<Vec3> deviation_samples(const TriangleSoup& surface, double tolerance) {
-  if (!surface.triangles.empty() && mean_edge_length(surface) <= 0.5 * tolerance) {
+  if (!surface.triangles.empty() && mean_edge_length(surface) <= vertex_samples_edge_fraction * tolerance) {
     std::vector<char> used(surface.points.size(), 0);
     std::vector<Vec3> vertices;
     for (const Triangle& t : surface.triangles)
@@ -143,6 +147,17 @@ std::vector<double> quad_deviation(const TriangleSoup& surface, const LatticeQua
 }
 
 namespace {
+
+/// A quad whose shorter pair of opposite sides is longer than this fraction of
+/// the other pair counts as near-square: both its chords are split.
+constexpr double near_square_ratio = 0.7;
+/// Each round of the refinement proper splits the chords through the quads above
+/// this fraction of the largest deviation (and above the tolerance)...
+constexpr double worst_fraction = 0.75;
+/// ...and the rounds that spend the rest of the budget up to min_quads, above this one.
+constexpr double budget_fraction = 0.8;
+/// A failed round is retried one chord at a time this many times at most.
+constexpr int single_chord_tries = 8;
 
 /// One round: splits the chords through the quads whose deviation exceeds
 /// `threshold`, worst first, as long as the quad count stays within `max_quads`,
@@ -176,7 +191,7 @@ std::size_t split_round(const Placement& placement, const TriangleTree& index, c
     // a near-square quad: the shorter chord first (both halve the quad)
     const auto& of = chords.chord_of[static_cast<std::size_t>(k)];
     int first = l0 >= l1 ? 0 : 1;
-    const bool square = std::min(l0, l1) > 0.7 * std::max(l0, l1);
+    const bool square = std::min(l0, l1) > near_square_ratio * std::max(l0, l1);
     if (square && chords.length[static_cast<std::size_t>(of[1 - first])] < chords.length[static_cast<std::size_t>(of[first])])
       first = 1 - first;
     std::vector<int> directions{first};
@@ -246,7 +261,7 @@ DeviationRefinementReport refine_to_deviation(const TriangleSoup& surface,
   // chords whose split was undone, as (quad, direction) of the current quads: a
   // round that fails is tried again with the chords of one quad at a time (the
   // worst), and chords that fail alone are left out until a split succeeds (the
-  // quads are numbered anew then); at most 8 such tries per round
+  // quads are numbered anew then); at most single_chord_tries such tries per round
   std::vector<std::pair<int, int>> forbidden, crossings;
   auto attempt = [&](double threshold, std::size_t max_quads, std::size_t max_chosen) {
     const LatticeQuads before = quads;
@@ -272,7 +287,7 @@ DeviationRefinementReport refine_to_deviation(const TriangleSoup& surface,
   auto round = [&](double threshold, std::size_t max_quads) {
     const int result = attempt(threshold, max_quads, std::numeric_limits<std::size_t>::max());
     if (result >= 0) return result > 0;
-    for (int single = 0; single < 8; ++single) {
+    for (int single = 0; single < single_chord_tries; ++single) {
       const int one = attempt(threshold, max_quads, 1);
       if (one > 0) return true;
       if (one == 0) return false;
@@ -282,11 +297,11 @@ DeviationRefinementReport refine_to_deviation(const TriangleSoup& surface,
   };
   // the worst quads first: the largest deviation is what the budget must bring down
   for (int r = 0; r < options.max_rounds; ++r)
-    if (!round(std::max(options.tolerance, 0.75 * max_of(dev)), options.max_quads)) break;
+    if (!round(std::max(options.tolerance, worst_fraction * max_of(dev)), options.max_quads)) break;
   report.tolerance_met = max_of(dev) <= options.tolerance;
   // the rest of the budget, up to min_quads: the largest deviations
   while (quads.quads.size() < options.min_quads)
-    if (!round(0.8 * max_of(dev), options.min_quads)) break;
+    if (!round(budget_fraction * max_of(dev), options.min_quads)) break;
   report.deviation_after = max_of(dev);
   report.quads_added = quads.quads.size() - start;
   return report;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <unordered_map>
 
 namespace qm {
@@ -136,16 +137,22 @@ struct PointKey {
   }
 };
 
-}  // namespace
+/// Charts of two triangles at a vertex whose difference is farther than this
+/// (lattice units, per coordinate) from an integer count as a seam mismatch.
+constexpr double seam_tolerance = 1e-4;
+/// A cell is complete when its pieces' image areas add up to 1 within this
+/// (lattice units^2); the areas are clipped in floating point.
+constexpr double complete_cell_tolerance = 1e-6;
 
-LatticeQuads extract_lattice_quads(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
-                                   const FaceMap& param, ExtractionReport& report) {
+using Charts = std::vector<std::array<P2, 3>>;
+
+/// The fixed-point image of every triangle corner: the first chart met at each
+/// vertex is its reference, the others are that plus an integer translation (so a
+/// lattice point on a seam is the same in every chart). Counts seam mismatches.
+Charts fixed_point_charts(const TriangleSoup& soup, const FaceMap& param, ExtractionReport& report) {
   const std::size_t nF = soup.triangles.size(), nV = soup.points.size();
   const double S = static_cast<double>(lattice_scale);
-  report = {};
-
-  // 1. fixed-point charts, integer translations between the charts of a vertex
-  std::vector<std::array<P2, 3>> q(nF);
+  Charts q(nF);
   std::vector<P2> reference(nV);
   std::vector<Complex> reference_value(nV);
   std::vector<char> has_reference(nV, 0);
@@ -160,27 +167,40 @@ LatticeQuads extract_lattice_quads(const TriangleSoup& soup, const SurfaceAdjace
       }
       const Complex diff = z - reference_value[v];
       const double dx = std::round(diff.real()), dy = std::round(diff.imag());
-      if (std::abs(diff.real() - dx) > 1e-4 || std::abs(diff.imag() - dy) > 1e-4) ++report.seam_mismatches;
+      if (std::abs(diff.real() - dx) > seam_tolerance || std::abs(diff.imag() - dy) > seam_tolerance)
+        ++report.seam_mismatches;
       q[f][static_cast<std::size_t>(i)] =
           reference[v] + P2{static_cast<I64>(dx) * lattice_scale, static_cast<I64>(dy) * lattice_scale};
     }
-  // a triangle is used when positive and not absurdly large (a map blown up by a
-  // failed repair would otherwise have its lattice enumerated cell by cell)
+  return q;
+}
+
+/// The triangles used: positive and not absurdly large (a map blown up by a failed
+/// repair would otherwise have its lattice enumerated cell by cell). Counts the others.
+std::vector<char> usable_triangles(const Charts& q, ExtractionReport& report) {
   auto cells_spanned = [&](const std::array<P2, 3>& t) {
     const auto [k0, k1, l0, l1] = cell_box(t);
     return static_cast<double>(k1 - k0 + 1) * static_cast<double>(l1 - l0 + 1);
   };
-  std::vector<char> good(nF, 0);
-  for (std::size_t f = 0; f < nF; ++f) {
+  std::vector<char> good(q.size(), 0);
+  for (std::size_t f = 0; f < q.size(); ++f) {
     good[f] = orient(q[f][0], q[f][1], q[f][2]) > 0 && cells_spanned(q[f]) <= max_cells_per_triangle;
     if (!good[f] && report.bad_triangles++ == 0) report.first_problem_triangle = static_cast<int>(f);
   }
+  return good;
+}
 
-  // 2. pieces
-  std::vector<CellKey> pieces;
-  std::vector<double> piece_area;
-  std::unordered_map<CellKey, int, CellKeyHash> piece_of;
-  for (std::size_t f = 0; f < nF; ++f) {
+/// The pieces: per usable triangle, the cells its open image meets, with the area
+/// of the image clipped to the cell.
+struct Pieces {
+  std::vector<CellKey> keys;
+  std::vector<double> area;
+  std::unordered_map<CellKey, int, CellKeyHash> index;  ///< of each key in `keys`
+};
+
+Pieces cell_pieces(const Charts& q, const std::vector<char>& good) {
+  Pieces pieces;
+  for (std::size_t f = 0; f < q.size(); ++f) {
     if (!good[f]) continue;
     const auto& t = q[f];
     const auto [k0, k1, l0, l1] = cell_box(t);
@@ -188,15 +208,23 @@ LatticeQuads extract_lattice_quads(const TriangleSoup& soup, const SurfaceAdjace
       for (I64 l = l0; l <= l1; ++l)
         if (triangle_meets_cell(t, k, l)) {
           const CellKey key{static_cast<int>(f), k, l};
-          piece_of.emplace(key, static_cast<int>(pieces.size()));
-          pieces.push_back(key);
-          piece_area.push_back(clipped_area(t, k, l));
+          pieces.index.emplace(key, static_cast<int>(pieces.keys.size()));
+          pieces.keys.push_back(key);
+          pieces.area.push_back(clipped_area(t, k, l));
         }
   }
+  return pieces;
+}
 
-  // 3. pieces across edges
-  UnionFind cells(pieces.size());
-  for (std::size_t f = 0; f < nF; ++f) {
+/// The cells: the pieces of two usable triangles sharing an edge are one cell
+/// where the open edge crosses the open cell (in the charts' translation). Counts
+/// the edges whose two charts differ by more than a lattice translation.
+/// Returns the cells as lists of pieces (ascending), ordered by their first piece.
+std::vector<std::vector<int>> join_pieces(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                          const Charts& q, const std::vector<char>& good, const Pieces& pieces,
+                                          ExtractionReport& report) {
+  UnionFind cells(pieces.keys.size());
+  for (std::size_t f = 0; f < q.size(); ++f) {
     if (!good[f]) continue;
     for (int i = 0; i < 3; ++i) {
       const int a = soup.triangles[f][i], b = soup.triangles[f][(i + 1) % 3];
@@ -214,111 +242,159 @@ LatticeQuads extract_lattice_quads(const TriangleSoup& soup, const SurfaceAdjace
       for (I64 k = k0; k <= k1; ++k)
         for (I64 l = l0; l <= l1; ++l) {
           if (!segment_meets_cell(A, B, k, l)) continue;
-          const auto p = piece_of.find({static_cast<int>(f), k, l});
-          const auto r = piece_of.find({g.face, k + tk, l + tl});
-          if (p != piece_of.end() && r != piece_of.end()) cells.unite(p->second, r->second);
+          const auto p = pieces.index.find({static_cast<int>(f), k, l});
+          const auto r = pieces.index.find({g.face, k + tk, l + tl});
+          if (p != pieces.index.end() && r != pieces.index.end()) cells.unite(p->second, r->second);
         }
     }
   }
-
-  // 4. cells: complete ones become quads
   std::unordered_map<int, std::vector<int>> members;
-  for (std::size_t p = 0; p < pieces.size(); ++p) members[cells.find(static_cast<int>(p))].push_back(static_cast<int>(p));
-  LatticeQuads out;
-  std::map<PointKey, int> point_of;
-  auto locate = [&](const CellKey& piece, int dx, int dy, int& id) {
+  for (std::size_t p = 0; p < pieces.keys.size(); ++p)
+    members[cells.find(static_cast<int>(p))].push_back(static_cast<int>(p));
+  // deterministic order: by first piece
+  std::vector<std::vector<int>> ordered;
+  for (auto& [root, list] : members) ordered.push_back(std::move(list));
+  std::sort(ordered.begin(), ordered.end(),
+            [](const std::vector<int>& x, const std::vector<int>& y) { return x.front() < y.front(); });
+  return ordered;
+}
+
+/// The quad points: lattice points located in a piece's closed triangle, one
+/// point per place on S whatever the chart (the key: a vertex, an edge and the
+/// offset from its smaller end, or a face and the offset from its first corner).
+class LatticePoints {
+ public:
+  LatticePoints(const TriangleSoup& soup, const Charts& q, LatticeQuads& out) : soup_(soup), q_(q), out_(out) {}
+
+  /// The corner (piece.k + dx, piece.l + dy) of the piece's cell, if it lies in the
+  /// piece's closed triangle: its point's id in `id`.
+  bool locate(const CellKey& piece, int dx, int dy, int& id) {
     const auto f = static_cast<std::size_t>(piece.face);
-    const auto& t = q[f];
+    const auto& t = q_[f];
     const P2 L{(piece.k + dx) * lattice_scale, (piece.l + dy) * lattice_scale};
     int o[3];
     for (int i = 0; i < 3; ++i) {
       o[i] = orient(t[static_cast<std::size_t>(i)], t[static_cast<std::size_t>((i + 1) % 3)], L);
       if (o[i] < 0) return false;
     }
-    const Triangle& tri = soup.triangles[f];
     SurfaceLocation loc;
     loc.face = piece.face;
-    PointKey key{};
-    int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
+    const PointKey key = place(piece, L, o, loc);
+    const auto it = point_of_.find(key);
+    if (it != point_of_.end()) {
+      id = it->second;
+      return true;
+    }
+    id = static_cast<int>(out_.points.size());
+    point_of_.emplace(key, id);
+    const Triangle& tri = soup_.triangles[f];
+    Vec3 p = Vec3::Zero();
+    for (int i = 0; i < 3; ++i)
+      p += loc.barycentric[static_cast<std::size_t>(i)] * soup_.points[static_cast<std::size_t>(tri[i])];
+    out_.points.push_back(p);
+    out_.locations.push_back(loc);
+    return true;
+  }
+
+ private:
+  /// Where the lattice point L (in the piece's triangle, edge orientations `o`,
+  /// none negative) lies on S: `loc`'s kind, ends and barycentric coordinates, and its key.
+  PointKey place(const CellKey& piece, P2 L, const int (&o)[3], SurfaceLocation& loc) const {
+    const auto& t = q_[static_cast<std::size_t>(piece.face)];
+    const Triangle& tri = soup_.triangles[static_cast<std::size_t>(piece.face)];
+    const int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
     if (zeros >= 2) {
       int corner = 0;
       while (!(L == t[static_cast<std::size_t>(corner)])) ++corner;
       loc.kind = SurfaceLocation::Kind::vertex;
       loc.a = tri[corner];
       loc.barycentric[static_cast<std::size_t>(corner)] = 1.0;
-      key = {0, loc.a, 0, 0, 0};
-    } else {
-      // barycentric coordinates from the exact sub-areas
-      double w[3], sum = 0;
-      for (int i = 0; i < 3; ++i) {
-        const P2 u = t[static_cast<std::size_t>((i + 1) % 3)], v = t[static_cast<std::size_t>((i + 2) % 3)];
-        w[i] = static_cast<double>(I128(u.x - L.x) * I128(v.y - L.y) - I128(u.y - L.y) * I128(v.x - L.x));
-        sum += w[i];
-      }
-      for (int i = 0; i < 3; ++i) loc.barycentric[static_cast<std::size_t>(i)] = w[i] / sum;
-      if (zeros == 1) {
-        int e = 0;
-        while (o[e] != 0) ++e;
-        const int a = tri[e], b = tri[(e + 1) % 3];
-        const int low = a < b ? e : (e + 1) % 3;
-        const P2 offset = L - t[static_cast<std::size_t>(low)];
-        loc.kind = SurfaceLocation::Kind::edge;
-        loc.a = std::min(a, b);
-        loc.b = std::max(a, b);
-        key = {1, loc.a, loc.b, offset.x, offset.y};
-      } else {
-        const P2 offset = L - t[0];
-        loc.kind = SurfaceLocation::Kind::face;
-        key = {2, piece.face, 0, offset.x, offset.y};
-      }
+      return {0, loc.a, 0, 0, 0};
     }
-    const auto it = point_of.find(key);
-    if (it != point_of.end()) {
-      id = it->second;
-      return true;
+    // barycentric coordinates from the exact sub-areas
+    double w[3], sum = 0;
+    for (int i = 0; i < 3; ++i) {
+      const P2 u = t[static_cast<std::size_t>((i + 1) % 3)], v = t[static_cast<std::size_t>((i + 2) % 3)];
+      w[i] = static_cast<double>(I128(u.x - L.x) * I128(v.y - L.y) - I128(u.y - L.y) * I128(v.x - L.x));
+      sum += w[i];
     }
-    id = static_cast<int>(out.points.size());
-    point_of.emplace(key, id);
-    Vec3 p = Vec3::Zero();
-    for (int i = 0; i < 3; ++i)
-      p += loc.barycentric[static_cast<std::size_t>(i)] * soup.points[static_cast<std::size_t>(tri[i])];
-    out.points.push_back(p);
-    out.locations.push_back(loc);
-    return true;
+    for (int i = 0; i < 3; ++i) loc.barycentric[static_cast<std::size_t>(i)] = w[i] / sum;
+    if (zeros == 1) {
+      int e = 0;
+      while (o[e] != 0) ++e;
+      const int a = tri[e], b = tri[(e + 1) % 3];
+      const int low = a < b ? e : (e + 1) % 3;
+      const P2 offset = L - t[static_cast<std::size_t>(low)];
+      loc.kind = SurfaceLocation::Kind::edge;
+      loc.a = std::min(a, b);
+      loc.b = std::max(a, b);
+      return {1, loc.a, loc.b, offset.x, offset.y};
+    }
+    const P2 offset = L - t[0];
+    loc.kind = SurfaceLocation::Kind::face;
+    return {2, piece.face, 0, offset.x, offset.y};
+  }
+
+  const TriangleSoup& soup_;
+  const Charts& q_;
+  LatticeQuads& out_;
+  std::map<PointKey, int> point_of_;
+};
+
+/// The quad of a complete cell (its pieces `cell`): its four corners, each located
+/// in the first piece that holds it, counter-clockwise from (k, l). Nothing when a
+/// corner is not found or two are one point.
+std::optional<std::array<int, 4>> cell_quad(const std::vector<int>& cell, const Pieces& pieces, LatticePoints& points) {
+  static constexpr int offsets[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  std::array<int, 4> quad{-1, -1, -1, -1};
+  for (int c = 0; c < 4; ++c) {
+    bool found = false;
+    for (int p : cell)
+      if (points.locate(pieces.keys[static_cast<std::size_t>(p)], offsets[c][0], offsets[c][1],
+                        quad[static_cast<std::size_t>(c)])) {
+        found = true;
+        break;
+      }
+    if (!found) return std::nullopt;
+  }
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      if (quad[static_cast<std::size_t>(i)] == quad[static_cast<std::size_t>(j)]) return std::nullopt;
+  return quad;
+}
+
+}  // namespace
+
+LatticeQuads extract_lattice_quads(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                   const FaceMap& param, ExtractionReport& report) {
+  report = {};
+  // 1. fixed-point charts, integer translations between the charts of a vertex
+  const Charts q = fixed_point_charts(soup, param, report);
+  const std::vector<char> good = usable_triangles(q, report);
+  // 2. pieces; 3. pieces across edges
+  const Pieces pieces = cell_pieces(q, good);
+  const std::vector<std::vector<int>> cells = join_pieces(soup, adjacency, q, good, pieces, report);
+  // 4. cells: complete ones become quads
+  LatticeQuads out;
+  LatticePoints points(soup, q, out);
+  const auto problem_at = [&](int first_piece) {
+    if (report.first_problem_triangle < 0) report.first_problem_triangle = pieces.keys[static_cast<std::size_t>(first_piece)].face;
   };
-  // deterministic order: by first piece
-  std::vector<std::pair<int, const std::vector<int>*>> ordered;
-  for (const auto& [root, list] : members) ordered.push_back({list.front(), &list});
-  std::sort(ordered.begin(), ordered.end());
-  for (const auto& [first, list] : ordered) {
+  for (const std::vector<int>& cell : cells) {
     double area = 0;
-    for (int p : *list) area += piece_area[static_cast<std::size_t>(p)];
-    if (std::abs(area - 1.0) > 1e-6) {
+    for (int p : cell) area += pieces.area[static_cast<std::size_t>(p)];
+    if (std::abs(area - 1.0) > complete_cell_tolerance) {
       ++report.incomplete_cells;
-      if (report.first_problem_triangle < 0) report.first_problem_triangle = pieces[static_cast<std::size_t>(first)].face;
+      problem_at(cell.front());
       continue;
     }
-    static constexpr int offsets[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-    std::array<int, 4> quad{-1, -1, -1, -1};
-    bool ok = true;
-    for (int c = 0; c < 4 && ok; ++c) {
-      bool found = false;
-      for (int p : *list)
-        if (locate(pieces[static_cast<std::size_t>(p)], offsets[c][0], offsets[c][1], quad[static_cast<std::size_t>(c)])) {
-          found = true;
-          break;
-        }
-      ok = found;
-    }
-    for (int i = 0; i < 4 && ok; ++i)
-      for (int j = i + 1; j < 4; ++j)
-        if (quad[static_cast<std::size_t>(i)] == quad[static_cast<std::size_t>(j)]) ok = false;
-    if (!ok) {
+    const auto quad = cell_quad(cell, pieces, points);
+    if (!quad) {
       ++report.degenerate_cells;
-      if (report.first_problem_triangle < 0) report.first_problem_triangle = pieces[static_cast<std::size_t>(first)].face;
+      problem_at(cell.front());
       continue;
     }
-    out.quads.push_back(quad);
+    out.quads.push_back(*quad);
   }
   report.cells = out.quads.size();
   return out;

@@ -2,6 +2,7 @@
 
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/extract/internal/closest_location.h"
+#include "libquadmesh/extract/internal/quad_star.h"
 #include "libquadmesh/quality/quad_quality.h"
 #include "libquadmesh/quality/internal/triangle_tree.h"
 
@@ -10,6 +11,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <iterator>
+#include <optional>
 #include <set>
 
 namespace qm {
@@ -27,98 +30,124 @@ double worst_corner_jacobian(const LatticeQuads& quads, const std::vector<int>& 
   return worst;
 }
 
+namespace {
+
+/// The first tries of a point: this much of the way to the mean of its neighbours.
+constexpr double mean_steps[] = {1.0, 0.5, 0.25};
+constexpr std::size_t mean_tries = std::size(mean_steps);
+/// Then a pattern search in the tangent plane: steps of these fractions of the
+/// mean edge length, in eight directions 45 degrees apart.
+constexpr double search_steps[] = {0.2, 0.1, 0.05};
+constexpr int search_directions = 8;
+/// A move must raise the worst corner's scaled Jacobian by more than this.
+constexpr double min_jacobian_gain = 1e-9;
+
+double smallest(const std::vector<double>& jacobian) {
+  return jacobian.empty() ? 1.0 : *std::min_element(jacobian.begin(), jacobian.end());
+}
+
+/// The movable points of the quads whose scaled Jacobian is below `below`.
+std::set<int> smoothing_candidates(const LatticeQuads& quads, const std::vector<double>& jacobian,
+                                   const std::vector<char>& movable, double below) {
+  std::set<int> candidates;
+  for (std::size_t q = 0; q < quads.quads.size(); ++q)
+    if (jacobian[q] < below)
+      for (int v : quads.quads[q])
+        if (movable[static_cast<std::size_t>(v)]) candidates.insert(v);
+  return candidates;
+}
+
+/// The trial positions of the regular point v (off S, put back on S by the
+/// caller): towards the mean of its edge neighbours (one per quad, valence 4),
+/// then a pattern search in the plane normal to `normal`, scaled by the mean edge.
+std::vector<Vec3> smoothing_tries(const LatticeQuads& quads, const QuadStar& star, int v, const Vec3& normal) {
+  const Vec3 here = quads.points[static_cast<std::size_t>(v)];
+  Vec3 mean = Vec3::Zero();
+  double edge = 0;
+  for (int q : star.quads_at[static_cast<std::size_t>(v)]) {
+    const auto& quad = quads.quads[static_cast<std::size_t>(q)];
+    const int k = static_cast<int>(std::find(quad.begin(), quad.end(), v) - quad.begin());
+    const Vec3& next = quads.points[static_cast<std::size_t>(quad[static_cast<std::size_t>((k + 1) % 4)])];
+    mean += next;
+    edge += (next - here).norm() / 4;
+  }
+  mean /= 4;
+  std::vector<Vec3> tries;
+  for (double step : mean_steps) tries.push_back(here + step * (mean - here));
+  Vec3 x = normal.unitOrthogonal();
+  const Vec3 y = normal.cross(x);
+  for (double step : search_steps)
+    for (int d = 0; d < search_directions; ++d)
+      tries.push_back(here + step * edge * (std::cos(d * M_PI / 4) * x + std::sin(d * M_PI / 4) * y));
+  return tries;
+}
+
+/// The try (on S) that raises the smallest scaled Jacobian of v's quads the most
+/// above `now`; the first of the mean's tries that raises it ends the search.
+/// Nothing when no try raises it, or every one that does is farther than
+/// options.max_move from v's original place.
+std::optional<std::pair<Vec3, SurfaceLocation>> best_smoothing_move(
+    const TriangleSoup& surface, const TriangleTree& tree, const LatticeQuads& quads, const QuadStar& star,
+    const PointMoves& moves, const std::vector<Vec3>& normals, const QuadSmoothingOptions& options, int v) {
+  const auto local_min = [&](const Vec3& p) {
+    return worst_corner_jacobian(quads, star.quads_at[static_cast<std::size_t>(v)], v, p, normals);
+  };
+  const Vec3 here = quads.points[static_cast<std::size_t>(v)];
+  const std::vector<Vec3> tries = smoothing_tries(quads, star, v, normals[static_cast<std::size_t>(v)]);
+  double best = local_min(here) + min_jacobian_gain;
+  std::optional<std::pair<Vec3, SurfaceLocation>> chosen;
+  for (std::size_t t = 0; t < tries.size(); ++t) {
+    if (t == mean_tries && chosen) break;  // the mean helped: no search
+    const auto candidate = closest_location(surface, tree, tries[t]);
+    const Vec3& p = candidate.first;
+    if (options.max_move > 0 && (p - moves.original().points[static_cast<std::size_t>(v)]).norm() > options.max_move)
+      continue;
+    if (const double m = local_min(p); m > best) {
+      best = m;
+      chosen = candidate;
+      if (t < mean_tries) break;
+    }
+  }
+  return chosen;
+}
+
+}  // namespace
+
 QuadSmoothingReport smooth_worst_quads(const TriangleSoup& surface, LatticeQuads& quads,
                                        const std::vector<int>& boundary_loop_of_point,
                                        const QuadSmoothingOptions& options) {
   QM_ASSERT(boundary_loop_of_point.size() == quads.points.size());
   QuadSmoothingReport report;
-  const std::size_t nP = quads.points.size();
-  std::vector<std::vector<int>> quads_at(nP);
-  for (std::size_t q = 0; q < quads.quads.size(); ++q)
-    for (int v : quads.quads[q]) quads_at[static_cast<std::size_t>(v)].push_back(static_cast<int>(q));
-  // regular interior points only
-  std::vector<char> movable(nP, 0);
-  for (std::size_t v = 0; v < nP; ++v) movable[v] = boundary_loop_of_point[v] < 0 && quads_at[v].size() == 4;
+  const QuadStar star(quads);
+  std::vector<char> movable(quads.points.size(), 0);
+  for (std::size_t v = 0; v < movable.size(); ++v) movable[v] = star.regular_interior(v, boundary_loop_of_point);
 
   const TriangleTree tree(surface.points, surface.triangles);
   std::vector<double> jacobian = sound_scaled_jacobians(polygon_mesh(quads));
-  report.min_before = jacobian.empty() ? 1.0 : *std::min_element(jacobian.begin(), jacobian.end());
+  report.min_before = smallest(jacobian);
   report.min_after = report.min_before;
-  const LatticeQuads original = quads;
-  std::set<int> moved;
+  PointMoves moves(quads);
   for (int round = 0; round < options.rounds; ++round) {
+    // each candidate, in turn, to the try that raises its quads' worst corner the
+    // most (the neighbours where they are, the normals of the round's start)
     const std::vector<Vec3> normals = vertex_normals(polygon_mesh(quads));
-    auto local_min = [&](int v, const Vec3& p) {
-      return worst_corner_jacobian(quads, quads_at[static_cast<std::size_t>(v)], v, p, normals);
-    };
-    std::set<int> candidates;
-    for (std::size_t q = 0; q < quads.quads.size(); ++q)
-      if (jacobian[q] < options.below)
-        for (int v : quads.quads[q])
-          if (movable[static_cast<std::size_t>(v)]) candidates.insert(v);
-    std::size_t moves = 0;
-    for (int v : candidates) {
-      // the mean of the edge neighbours (one per quad, valence 4) and of the edges
-      const Vec3 here = quads.points[static_cast<std::size_t>(v)];
-      Vec3 mean = Vec3::Zero();
-      double edge = 0;
-      for (int q : quads_at[static_cast<std::size_t>(v)]) {
-        const auto& quad = quads.quads[static_cast<std::size_t>(q)];
-        const int k = static_cast<int>(std::find(quad.begin(), quad.end(), v) - quad.begin());
-        const Vec3& next = quads.points[static_cast<std::size_t>(quad[static_cast<std::size_t>((k + 1) % 4)])];
-        mean += next;
-        edge += (next - here).norm() / 4;
+    std::size_t moved = 0;
+    for (int v : smoothing_candidates(quads, jacobian, movable, options.below))
+      if (const auto to = best_smoothing_move(surface, tree, quads, star, moves, normals, options, v)) {
+        moves.move(static_cast<std::size_t>(v), *to);
+        ++moved;
       }
-      mean /= 4;
-      const double now = local_min(v, here);
-      // candidates: towards the mean, then (when that does not help, e.g. beside a
-      // singular vertex) a pattern search in the tangent plane; the best one that
-      // raises the worst corner is taken
-      std::vector<Vec3> tries;
-      for (double step : {1.0, 0.5, 0.25}) tries.push_back(here + step * (mean - here));
-      {
-        const Vec3& n = normals[static_cast<std::size_t>(v)];
-        Vec3 x = n.unitOrthogonal();
-        const Vec3 y = n.cross(x);
-        for (double step : {0.2, 0.1, 0.05})
-          for (int d = 0; d < 8; ++d)
-            tries.push_back(here + step * edge * (std::cos(d * M_PI / 4) * x + std::sin(d * M_PI / 4) * y));
-      }
-      double best = now + 1e-9;
-      bool found = false;
-      std::pair<Vec3, SurfaceLocation> chosen{here, SurfaceLocation{}};
-      for (std::size_t t = 0; t < tries.size(); ++t) {
-        if (t == 3 && found) break;  // the mean helped: no search
-        const auto candidate = closest_location(surface, tree, tries[t]);
-        const Vec3& p = candidate.first;
-        if (options.max_move > 0 && (p - original.points[static_cast<std::size_t>(v)]).norm() > options.max_move)
-          continue;
-        if (const double m = local_min(v, p); m > best) {
-          best = m;
-          chosen = candidate;
-          found = true;
-          if (t < 3) break;
-        }
-      }
-      if (found) {
-        quads.points[static_cast<std::size_t>(v)] = chosen.first;
-        quads.locations[static_cast<std::size_t>(v)] = chosen.second;
-        moved.insert(v);
-        ++moves;
-      }
-    }
     jacobian = sound_scaled_jacobians(polygon_mesh(quads));
-    if (moves == 0) break;
+    if (moved == 0) break;
   }
-  report.min_after = jacobian.empty() ? 1.0 : *std::min_element(jacobian.begin(), jacobian.end());
+  report.min_after = smallest(jacobian);
   // each move raised its own quads' worst corner, with the neighbours' normals of
   // before it; should the whole have come out worse, it is undone
   if (report.min_after < report.min_before) {
-    quads = original;
+    moves.undo_all();
     report.min_after = report.min_before;
-    moved.clear();
   }
-  report.moved_points = moved.size();
+  report.moved_points = moves.count();
   return report;
 }
 

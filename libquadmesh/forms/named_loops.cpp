@@ -132,4 +132,11 @@ NamedLoops named_loops(const Mesh& m) {
   return out;
 }
 
+std::vector<int> boundary_loop_of_vertex(const NamedLoops& loops, std::size_t vertex_count) {
+  std::vector<int> loop_of(vertex_count, -1);
+  for (std::size_t k = 0; k < loops.boundaries.size(); ++k)
+    for (int v : loops.boundaries[k]) loop_of[static_cast<std::size_t>(v)] = static_cast<int>(k);
+  return loop_of;
+}
+
 }  // namespace qm

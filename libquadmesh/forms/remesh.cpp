@@ -11,8 +11,11 @@ namespace qm {
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 
+/// Without a target, the remeshed edges are this fraction of the input's mean edge.
+constexpr double default_edge_fraction = 0.4;
+
 double remesh_target(const TriangleSoup& soup, const RemeshOptions& options) {
-  return options.target_edge_length > 0 ? options.target_edge_length : 0.4 * mean_edge_length(soup);
+  return options.target_edge_length > 0 ? options.target_edge_length : default_edge_fraction * mean_edge_length(soup);
 }
 
 TriangleSoup remesh_isotropic(const TriangleSoup& soup, const RemeshOptions& options) {

@@ -18,6 +18,15 @@ namespace {
 /// Greedy choice, for a closed surface, of B-orthonormal forms c_1..c_G with
 /// {c_i, Lambda c_i} independent: Gram-Schmidt on the unit vectors against the
 /// span of what was chosen and its stars.
+/// In the Gram-Schmidt of closed_surface_coefficients, a candidate whose
+/// B-norm is below this after orthogonalization is dependent on the span; its
+/// image under Lambda is added only above dependent_image_norm.
+constexpr double dependent_norm = 1e-6;
+constexpr double dependent_image_norm = 1e-9;
+/// P, (I + M_o) / 2 symmetrized, projects onto the forms M_o leaves invariant: its
+/// eigenvalues are 0 or 1 up to rounding; those above this are kept.
+constexpr double invariant_eigenvalue = 0.5;
+
 Eigen::MatrixXd closed_surface_coefficients(const HodgeStar& star) {
   const Eigen::Index n = star.inner.rows();
   const Eigen::MatrixXd& B = star.inner;
@@ -30,12 +39,12 @@ Eigen::MatrixXd closed_surface_coefficients(const HodgeStar& star) {
   for (Eigen::Index i = 0; i < n && chosen.cols() < n / 2; ++i) {
     Eigen::VectorXd v = orthogonalize(Eigen::VectorXd::Unit(n, i));
     const double norm = std::sqrt(v.dot(B * v));
-    if (norm < 1e-6) continue;
+    if (norm < dependent_norm) continue;
     v /= norm;
     span.push_back(v);
     Eigen::VectorXd w = orthogonalize(star.lambda * v);
     const double wn = std::sqrt(w.dot(B * w));
-    if (wn > 1e-9) span.push_back(w / wn);
+    if (wn > dependent_image_norm) span.push_back(w / wn);
     chosen.conservativeResize(n, chosen.cols() + 1);
     chosen.col(chosen.cols() - 1) = v;
   }
@@ -67,7 +76,7 @@ SymmetricBasis symmetric_basis(const DoubledSurface& d, const Eigen::MatrixXd& h
     basis.invariance_spectrum = eig.eigenvalues();
     std::vector<Eigen::Index> keep;
     for (Eigen::Index i = 0; i < n; ++i)
-      if (eig.eigenvalues()[i] > 0.5) keep.push_back(i);
+      if (eig.eigenvalues()[i] > invariant_eigenvalue) keep.push_back(i);
     basis.coefficients.resize(n, static_cast<Eigen::Index>(keep.size()));
     for (std::size_t j = 0; j < keep.size(); ++j)
       basis.coefficients.col(static_cast<Eigen::Index>(j)) = Rinv * eig.eigenvectors().col(keep[j]);

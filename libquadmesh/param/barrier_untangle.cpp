@@ -9,9 +9,13 @@
 
 namespace qm {
 
+/// safely_positive's margin: twice the image area must exceed the longest image
+/// edge times this many units of the extraction's fixed-point lattice (2^-30 cells).
+constexpr double safe_area_units = 64;
+
 bool safely_positive(const CornerValues& c) {
   const double longest = std::max({std::abs(c[1] - c[0]), std::abs(c[2] - c[1]), std::abs(c[0] - c[2])});
-  return image_area2(c) > 64 * std::ldexp(1.0, -30) * longest;
+  return image_area2(c) > safe_area_units * std::ldexp(1.0, -30) * longest;
 }
 
 namespace {
@@ -24,13 +28,17 @@ struct Reference {
   double area = 0;
 };
 
+/// A triangle with twice its area below this times its first edge squared is
+/// degenerate (dimensionless).
+constexpr double degenerate_area_ratio = 1e-12;
+
 Reference reference_of(const TriangleSoup& soup, int f) {
   const Triangle& t = soup.triangles[static_cast<std::size_t>(f)];
   const Vec3 e1 = soup.points[static_cast<std::size_t>(t[1])] - soup.points[static_cast<std::size_t>(t[0])];
   const Vec3 e2 = soup.points[static_cast<std::size_t>(t[2])] - soup.points[static_cast<std::size_t>(t[0])];
   const double l = e1.norm(), twice_area = e1.cross(e2).norm();
   Eigen::Matrix2d R;
-  if (l > 0 && twice_area > 1e-12 * l * l) {
+  if (l > 0 && twice_area > degenerate_area_ratio * l * l) {
     R << l, e1.dot(e2) / l, 0, twice_area / l;
   } else {
     const double m = std::max((e1.norm() + e2.norm() + (e2 - e1).norm()) / 3, 1e-300);
@@ -177,6 +185,24 @@ std::vector<std::vector<int>> regions_around(const TriangleSoup& soup, const Sur
   return pieces;
 }
 
+// The optimisation of one region (Garanzha et al.'s eps schedule):
+/// eps starts at least here (determinant units: image area over reference area)...
+constexpr double min_initial_eps = 1e-3;
+/// ...then follows the smallest determinant D: with sigma = max(1 - E / E_previous,
+/// min_sigma) and mu = (1 - sigma) chi(D, eps), eps becomes min(2 sqrt(mu (mu - D)),
+/// eps_shrink eps) when D < mu, else eps_drop eps.
+constexpr double min_sigma = 0.1;
+constexpr double eps_shrink = 0.7;
+constexpr double eps_drop = 0.1;
+/// L-BFGS per round: stop at this gradient norm (absolute and relative), or after so many iterations.
+constexpr double lbfgs_gradient_tolerance = 1e-9;
+constexpr int lbfgs_iterations = 100;
+/// Rounds at most; a round raises D "enough" when by min_progress |D_best|, and
+/// stall_rounds rounds without that give the region up.
+constexpr int max_rounds = 60;
+constexpr int stall_rounds = 8;
+constexpr double min_progress = 0.01;
+
 /// Minimizes the barrier energy over one region with shrinking eps; commits the
 /// moves to `param` when every triangle of the region ends up positive.
 bool untangle_region(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, FaceMap& param,
@@ -186,12 +212,12 @@ bool untangle_region(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   Eigen::VectorXd x = Eigen::VectorXd::Zero(region.dofs());
   Eigen::VectorXd grad;
   double D = region.min_det(x);
-  double eps = std::max(1e-3, 2 * std::abs(D));
+  double eps = std::max(min_initial_eps, 2 * std::abs(D));
   double previous = region.energy(x, grad, eps);
   LBFGSpp::LBFGSParam<double> settings;
-  settings.epsilon = 1e-9;
-  settings.epsilon_rel = 1e-9;
-  settings.max_iterations = 100;
+  settings.epsilon = lbfgs_gradient_tolerance;
+  settings.epsilon_rel = lbfgs_gradient_tolerance;
+  settings.max_iterations = lbfgs_iterations;
   LBFGSpp::LBFGSSolver<double> solver(settings);
   // the region's corners moved by y, face by face
   auto displaced = [&](const Eigen::VectorXd& y) {
@@ -207,11 +233,11 @@ bool untangle_region(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   auto untangled = [&](const std::vector<CornerValues>& corners) {
     return std::all_of(corners.begin(), corners.end(), safely_positive);
   };
-  // a region whose smallest determinant stops rising in 8 rounds cannot be
+  // a region whose smallest determinant stops rising in stall_rounds rounds cannot be
   // untangled with its outer ring where it is: a larger region is tried instead
   double best_D = D;
   int stalled = 0;
-  for (int round = 0; round < 60 && stalled < 8 && !(D > 0 && untangled(displaced(x))); ++round) {
+  for (int round = 0; round < max_rounds && stalled < stall_rounds && !(D > 0 && untangled(displaced(x))); ++round) {
     // the line search may stop on a trial point: keep the best point evaluated
     Eigen::VectorXd best = x;
     double best_energy = region.energy(x, grad, eps);
@@ -232,11 +258,11 @@ bool untangle_region(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
     x = best;
     D = region.min_det(x);
     // eps follows the smallest determinant (Garanzha et al.'s update)
-    const double sigma = std::max(1 - best_energy / previous, 0.1);
+    const double sigma = std::max(1 - best_energy / previous, min_sigma);
     const double mu = (1 - sigma) * chi(D, eps);
     previous = best_energy;
-    eps = D < mu ? std::min(2 * std::sqrt(mu * (mu - D)), 0.7 * eps) : 0.1 * eps;
-    if (D > best_D + 0.01 * std::abs(best_D)) {
+    eps = D < mu ? std::min(2 * std::sqrt(mu * (mu - D)), eps_shrink * eps) : eps_drop * eps;
+    if (D > best_D + min_progress * std::abs(best_D)) {
       best_D = D;
       stalled = 0;
     } else {
@@ -254,9 +280,7 @@ bool untangle_region(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
 
 UntangleReport untangle_by_barrier(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, FaceMap& param,
                                    const std::vector<char>& pinned) {
-  UntangleReport report;
-  report.flipped_before = count_flipped(param);
-  report.flipped_after = report.flipped_before;
+  UntangleReport report = unmoved_report(param);
   for (int rings : {2, 4, 8, 16}) {
     if (std::all_of(param.corners.begin(), param.corners.end(), safely_positive)) break;
     ++report.rounds;

@@ -8,13 +8,23 @@ namespace qm {
 
 namespace {
 
+/// A boundary this close to an interior branch point (image radius, cells) may
+/// forbid its nearer level (lattice_level)...
+constexpr double boundary_search_radius = 1.5;
+/// ...when the boundary's V is within this of that level (cells).
+constexpr double same_level_tolerance = 1e-3;
+/// The snapped disk: image radius three times the snap, at least this (cells),
+/// and short of a kept vertex by this factor of its distance.
+constexpr double min_snap_radius = 0.5;
+constexpr double keep_clearance = 0.9;
+
 /// The integer V for an interior branch point b with image p: the nearer of the two
 /// integers around p.imag(), unless a boundary within 1.5 cells of b lies at that
 /// level (a branch point on a boundary's level folds the strip between them; see
 /// quantization.h), then the other one.
 double lattice_level(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const FaceMap& param, int b,
                      Complex p) {
-  const std::unordered_map<int, double> ball = image_ball(soup, adjacency, param, b, 1.5);
+  const std::unordered_map<int, double> ball = image_ball(soup, adjacency, param, b, boundary_search_radius);
   // images in b's chart, spread from b through the ball's triangles
   std::unordered_map<int, Complex> value{{b, p}};
   std::vector<int> frontier{b};
@@ -39,7 +49,7 @@ double lattice_level(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   const double nearest = std::round(p.imag());
   const double other = nearest + (p.imag() >= nearest ? 1.0 : -1.0);
   for (double level : boundary_levels)
-    if (std::abs(level - nearest) < 1e-3) return other;
+    if (std::abs(level - nearest) < same_level_tolerance) return other;
   return nearest;
 }
 
@@ -101,9 +111,9 @@ SnapReport snap_hidden_cones(const TriangleSoup& soup, const SurfaceAdjacency& a
     const Complex p = param.corners[static_cast<std::size_t>(f0)][static_cast<std::size_t>(k0)];
     Complex delta(std::round(p.real()) - p.real(), 0.0);
     if (!boundary) delta.imag(lattice_level(soup, adjacency, param, b, p) - p.imag());
-    double radius = std::max(3 * std::abs(delta), 0.5);
+    double radius = std::max(3 * std::abs(delta), min_snap_radius);
     for (const auto& [v, d] : image_ball(soup, adjacency, param, b, radius))
-      if (keep[static_cast<std::size_t>(v)] && v != b) radius = std::min(radius, 0.9 * d);
+      if (keep[static_cast<std::size_t>(v)] && v != b) radius = std::min(radius, keep_clearance * d);
     const std::unordered_map<int, double> disk = image_ball(soup, adjacency, param, b, radius);
     for (const auto& [v, d] : disk) {
       const double s = std::clamp(d / radius, 0.0, 1.0);

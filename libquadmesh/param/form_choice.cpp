@@ -84,6 +84,20 @@ double ratio(const Gradients& g, const Eigen::VectorXd& c, Eigen::VectorXd* grad
   return sum2 / total_area - mean * mean;
 }
 
+// The descent on the unit sphere of coefficients (most_uniform_combination):
+/// the first step (along the unit tangent), grown by step_growth after a success
+/// and halved after a failure, down to min_step;
+constexpr double initial_step = 0.1;
+constexpr double step_growth = 1.5;
+constexpr double min_step = 1e-8;
+/// at most this many steps from each start; it stops at a tangent gradient below
+/// min_tangent or a relative decrease of the ratio below min_relative_decrease.
+constexpr int max_descent_steps = 60;
+constexpr double min_tangent = 1e-10;
+constexpr double min_relative_decrease = 1e-6;
+/// Constraint rows (unit vectors) closer than this to dependent count once.
+constexpr double constraint_rank_threshold = 1e-6;
+
 }  // namespace
 
 double uniformity_ratio(const TriangleSoup& soup, const std::vector<FaceMap>& basis,
@@ -100,13 +114,13 @@ Eigen::VectorXd most_uniform_combination(const TriangleSoup& soup, const std::ve
   for (Eigen::Index start = 0; start < K; ++start) {
     Eigen::VectorXd c = Eigen::VectorXd::Unit(K, start), grad;
     double value = ratio(g, c, &grad);
-    double step = 0.1;
-    for (int it = 0; it < 60 && K > 1; ++it) {
+    double step = initial_step;
+    for (int it = 0; it < max_descent_steps && K > 1; ++it) {
       const double before = value;
       const Eigen::VectorXd tangent = grad - grad.dot(c) * c;  // on the sphere
-      if (tangent.norm() < 1e-10) break;
+      if (tangent.norm() < min_tangent) break;
       bool moved = false;
-      while (step > 1e-8) {
+      while (step > min_step) {
         Eigen::VectorXd trial = (c - step * tangent / tangent.norm()).normalized();
         Eigen::VectorXd trial_grad;
         const double v = ratio(g, trial, &trial_grad);
@@ -114,13 +128,13 @@ Eigen::VectorXd most_uniform_combination(const TriangleSoup& soup, const std::ve
           c = trial;
           value = v;
           grad = trial_grad;
-          step *= 1.5;
+          step *= step_growth;
           moved = true;
           break;
         }
         step *= 0.5;
       }
-      if (!moved || before - value < 1e-6 * std::abs(before)) break;
+      if (!moved || before - value < min_relative_decrease * std::abs(before)) break;
     }
     if (value < best_value) {
       best_value = value;
@@ -135,7 +149,7 @@ Eigen::VectorXd most_uniform_combination(const TriangleSoup& soup, const std::ve
   if (constraints.rows() == 0) return most_uniform_combination(soup, basis);
   QM_ASSERT(constraints.cols() == static_cast<Eigen::Index>(basis.size()));
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(constraints, Eigen::ComputeFullV);
-  svd.setThreshold(1e-6);  // rows are unit vectors: nearly equal ones count once
+  svd.setThreshold(constraint_rank_threshold);
   const Eigen::Index rank = svd.rank();
   const Eigen::Index free = constraints.cols() - rank;
   QM_ASSERT_MSG(free > 0, "most_uniform_combination: the constraints leave no form");

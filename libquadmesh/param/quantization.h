@@ -27,6 +27,7 @@
 // xi translated with the zero. Around a corner the whole disk is xi translated.
 #pragma once
 
+#include "libquadmesh/forms/named_loops.h"
 #include "libquadmesh/param/face_map.h"
 #include "libquadmesh/param/internal/surface_adjacency.h"
 #include "libquadmesh/param/zero_stars.h"
@@ -35,12 +36,9 @@
 
 namespace qm {
 
-/// The loops of section 2 as vertex sequences on S (forms/named_loops.h).
-struct PeriodLoops {
-  std::vector<std::vector<int>> boundaries;  ///< closed; boundary 0 is the reference
-  std::vector<std::vector<int>> bridges;     ///< open, bridges[k - 1] from boundary 0 to k
-  std::vector<std::vector<int>> handles;     ///< closed, 2g of them
-};
+/// The loops of section 2 as vertex sequences on S: named_loops() gives them;
+/// boundary 0 is the reference.
+using PeriodLoops = NamedLoops;
 
 struct LoopPeriod {
   std::string loop;  ///< "handle_0", "boundary_1", "bridge_1" ...

@@ -7,7 +7,7 @@
 
 namespace qm {
 
-std::vector<double> rounded_periods(const SurfaceAdjacency& adjacency, const FaceMap& h, const PeriodLoops& loops) {
+std::vector<double> rounded_periods(const SurfaceAdjacency& adjacency, const FaceMap& h, const NamedLoops& loops) {
   std::vector<double> periods;
   std::vector<Complex> handle;
   for (const auto& loop : loops.handles) handle.push_back(path_integral(adjacency, h, loop, true));
@@ -28,6 +28,10 @@ double rounding_residual(const std::vector<double>& periods, double s) {
   return sum;
 }
 
+/// A scale replaces the best so far only if its residual is lower by more than
+/// this (cells^2): rounding noise does not move the scale.
+constexpr double residual_margin = 1e-12;
+
 double rounding_scale(const std::vector<double>& periods, double s0, double window) {
   QM_ASSERT(s0 > 0 && window >= 0);
   double fastest = 0;
@@ -41,7 +45,7 @@ double rounding_scale(const std::vector<double>& periods, double s0, double wind
   for (long i = 1; i <= n; ++i)
     for (const double s : {s0 - static_cast<double>(i) * step, s0 + static_cast<double>(i) * step}) {
       if (std::abs(s - s0) > window * s0 || s <= 0) continue;
-      if (const double e = rounding_residual(periods, s); e < best_residual - 1e-12) {
+      if (const double e = rounding_residual(periods, s); e < best_residual - residual_margin) {
         best_residual = e;
         best = s;
       }

@@ -22,7 +22,7 @@ namespace qm {
 /// The periods of `h` that the quantization rounds (order: handle U, handle V,
 /// boundary U, bridge V). Precondition: the loops lie on `adjacency`'s surface,
 /// the one `h` is defined on.
-std::vector<double> rounded_periods(const SurfaceAdjacency& adjacency, const FaceMap& h, const PeriodLoops& loops);
+std::vector<double> rounded_periods(const SurfaceAdjacency& adjacency, const FaceMap& h, const NamedLoops& loops);
 
 /// E(s) above, with round_nonzero (quantization.h) as the rounding.
 double rounding_residual(const std::vector<double>& periods, double s);

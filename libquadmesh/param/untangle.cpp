@@ -10,6 +10,13 @@ std::size_t count_flipped(const FaceMap& param) {
   return n;
 }
 
+UntangleReport unmoved_report(const FaceMap& param) {
+  UntangleReport report;
+  report.flipped_before = count_flipped(param);
+  report.flipped_after = report.flipped_before;
+  return report;
+}
+
 namespace {
 
 /// The polygon `poly` clipped to the half-plane left of the line a->b.
@@ -40,23 +47,28 @@ Complex centroid(const std::vector<Complex>& poly, double& area) {
 
 }  // namespace
 
+/// Sweeps at most; the first own_star_sweeps move only the vertices of folded
+/// triangles (later ones their neighbours too), and the cones' stars (pinned 2)
+/// move only after pinned_star_sweeps.
+constexpr int max_sweeps = 100;
+constexpr int own_star_sweeps = 10;
+constexpr int pinned_star_sweeps = 20;
+
 UntangleReport untangle(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, FaceMap& param,
                         const std::vector<char>& pinned) {
-  UntangleReport report;
-  report.flipped_before = count_flipped(param);
-  report.flipped_after = report.flipped_before;
+  UntangleReport report = unmoved_report(param);
   auto shift_vertex = [&](int v, Complex by) {
     for (int f : adjacency.vertex_faces[static_cast<std::size_t>(v)])
       for (int i = 0; i < 3; ++i)
         if (soup.triangles[static_cast<std::size_t>(f)][i] == v) param.corners[static_cast<std::size_t>(f)][i] += by;
   };
-  // pinned 1: never moves; 2: moves only after 20 sweeps
+  // pinned 1: never moves; 2: moves only after pinned_star_sweeps sweeps
   auto movable = [&](int v, int sweep) {
     const char p = pinned[static_cast<std::size_t>(v)];
-    return p == 0 || (p == 2 && sweep > 20);
+    return p == 0 || (p == 2 && sweep > pinned_star_sweeps);
   };
   std::set<int> moved;
-  for (int sweep = 1; sweep <= 100 && report.flipped_after > 0; ++sweep) {
+  for (int sweep = 1; sweep <= max_sweeps && report.flipped_after > 0; ++sweep) {
     report.rounds = sweep;
     std::set<int> candidates;
     for (std::size_t f = 0; f < soup.triangles.size(); ++f)
@@ -64,7 +76,7 @@ UntangleReport untangle(const TriangleSoup& soup, const SurfaceAdjacency& adjace
         for (int v : soup.triangles[f])
           if (movable(v, sweep)) candidates.insert(v);
     // later sweeps also move the neighbours, whose kernels may be wider
-    if (sweep > 10) {
+    if (sweep > own_star_sweeps) {
       std::set<int> grown = candidates;
       for (int v : candidates)
         for (int f : adjacency.vertex_faces[static_cast<std::size_t>(v)])

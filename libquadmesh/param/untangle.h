@@ -30,4 +30,8 @@ UntangleReport untangle(const TriangleSoup& soup, const SurfaceAdjacency& adjace
 /// Triangles whose image area is <= 0.
 std::size_t count_flipped(const FaceMap& param);
 
+/// The report of an untangling that has not moved anything yet: the flipped
+/// triangles of `param`, before and (so far) after.
+UntangleReport unmoved_report(const FaceMap& param);
+
 }  // namespace qm

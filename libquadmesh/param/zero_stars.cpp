@@ -84,6 +84,13 @@ std::unordered_map<int, double> image_ball(const TriangleSoup& soup, const Surfa
   return distance;
 }
 
+/// An interior zero within this fraction of the merge radius (image distance)
+/// of the boundary becomes a boundary zero of twice its order there.
+constexpr double boundary_merge_fraction = 0.75;
+/// Two zeros of one boundary loop merge only nearer than this fraction of the
+/// radius (a tenth of a cell at radius 1).
+constexpr double boundary_pair_fraction = 0.1;
+
 std::vector<ZeroVertex> merge_close_zeros(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                                           const FaceMap& map, std::vector<ZeroVertex> zeros, double radius) {
   // an interior zero this close to the boundary would round onto the boundary's
@@ -91,7 +98,7 @@ std::vector<ZeroVertex> merge_close_zeros(const TriangleSoup& soup, const Surfac
   for (ZeroVertex& z : zeros) {
     if (z.on_boundary) continue;
     int nearest = -1;
-    double best = 0.75 * radius;
+    double best = boundary_merge_fraction * radius;
     for (const auto& [v, d] : image_ball(soup, adjacency, map, z.vertex, best))
       if (adjacency.boundary_vertex[static_cast<std::size_t>(v)] && d <= best) {
         best = d;
@@ -117,7 +124,7 @@ std::vector<ZeroVertex> merge_close_zeros(const TriangleSoup& soup, const Surfac
         const bool same_loop = adjacency.loop_of_vertex[static_cast<std::size_t>(zeros[i].vertex)] ==
                                adjacency.loop_of_vertex[static_cast<std::size_t>(other.vertex)];
         // zeros of two loops cannot share a vertex: each loop turns by its own zeros
-        if (!same_loop || d >= 0.1 * radius) continue;
+        if (!same_loop || d >= boundary_pair_fraction * radius) continue;
       }
       groups.unite(static_cast<int>(i), hit->second);
     }
@@ -171,6 +178,15 @@ std::vector<ZeroVertex> add_corners(const TriangleSoup& soup, const SurfaceAdjac
   return zeros;
 }
 
+// A boundary vertex is a sharp corner (boundary_corners) when the loop's turning
+// over arc length `scale` each way there is more than typical_turning_factor times
+// the loop's median turning and more than corner_angle_deg, and at least
+// min_local_turning_share of it happens within local_turning_fraction of `scale`
+// (a smooth bend turns in proportion to the distance).
+constexpr double typical_turning_factor = 2.5;
+constexpr double local_turning_fraction = 0.25;
+constexpr double min_local_turning_share = 0.6;
+
 std::vector<ZeroVertex> boundary_corners(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                                          double corner_angle_deg, double scale,
                                          const std::vector<ZeroVertex>& taken) {
@@ -201,7 +217,7 @@ std::vector<ZeroVertex> boundary_corners(const TriangleSoup& soup, const Surface
     std::vector<double> turning(n), local(n);
     for (std::size_t i = 0; i < n; ++i) {
       turning[i] = turning_at(i, scale);
-      local[i] = turning_at(i, 0.25 * scale);
+      local[i] = turning_at(i, local_turning_fraction * scale);
     }
     // a polygon approximating a smooth curve turns at every vertex: a corner must
     // stand out from the loop's typical turning
@@ -209,10 +225,10 @@ std::vector<ZeroVertex> boundary_corners(const TriangleSoup& soup, const Surface
     std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(n / 2), sorted.end());
     const double typical = std::abs(sorted[n / 2]);
     for (std::size_t i = 0; i < n; ++i) {
-      if (turning[i] <= 2.5 * typical) continue;
+      if (turning[i] <= typical_turning_factor * typical) continue;
       // a corner turns within a short distance: a smooth bend (a small hole) turns
       // in proportion to the distance and is no corner
-      if (used[static_cast<std::size_t>(loop[i])] || turning[i] <= limit || local[i] < 0.6 * turning[i]) continue;
+      if (used[static_cast<std::size_t>(loop[i])] || turning[i] <= limit || local[i] < min_local_turning_share * turning[i]) continue;
       // the sharpest vertex within `scale` along the loop
       bool sharpest = true;
       for (std::size_t step : {std::size_t(1), n - 1}) {

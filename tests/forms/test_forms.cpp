@@ -296,6 +296,19 @@ TEST_CASE("named loops: n boundaries, n - 1 bridges, 2g independent handle loops
     };
     for (const auto& loop : loops.handles)
       for (std::size_t i = 0; i < loop.size(); ++i) CHECK(adjacent(loop[i], loop[(i + 1) % loop.size()]));
+    // the vertex-to-loop map numbers the boundaries as the list does, and holds
+    // exactly the boundary vertices
+    const std::vector<int> loop_of = boundary_loop_of_vertex(loops, s.number_of_vertices());
+    std::size_t on_boundary = 0;
+    for (std::size_t k = 0; k < loops.boundaries.size(); ++k)
+      for (int v : loops.boundaries[k]) CHECK(loop_of[static_cast<std::size_t>(v)] == static_cast<int>(k));
+    for (Mesh::Vertex_index v : s.vertices()) {
+      CHECK((loop_of[v] >= 0) == s.is_border(v));
+      on_boundary += loop_of[v] >= 0;
+    }
+    std::size_t listed = 0;
+    for (const auto& loop : loops.boundaries) listed += loop.size();
+    CHECK(on_boundary == listed);
     for (std::size_t k = 0; k < loops.bridges.size(); ++k) {
       const auto& path = loops.bridges[k];
       for (std::size_t i = 0; i + 1 < path.size(); ++i) CHECK(adjacent(path[i], path[i + 1]));

@@ -1,10 +1,13 @@
 // Smoothing of the worst quads (extract/quad_smoothing.h) on a planar grid whose
 // best positions are known: the centre of the neighbours.
 #include "libquadmesh/extract/quad_smoothing.h"
+#include "libquadmesh/extract/internal/quad_star.h"
 #include "tests/support/grid_quads.h"
 #include "tests/support/test_meshes.h"
 
 #include <doctest/doctest.h>
+
+#include <algorithm>
 
 using namespace qm;
 
@@ -55,4 +58,42 @@ TEST_CASE("smoothing: a move is limited by max_move, and quads already good are 
   const QuadSmoothingReport none = smooth_worst_quads(surface, square, test::unit_square_boundary(square));
   CHECK(none.moved_points == 0);
   CHECK(square.points == untouched.points);
+}
+
+TEST_CASE("quads around a point: regular interior corners, rings, and moves put back") {
+  LatticeQuads q = grid_quads(4);  // 5 x 5 points, point (i, j) = 5 j + i
+  const std::vector<int> loops = test::unit_square_boundary(q);
+  const QuadStar star(q);
+  REQUIRE(star.quads_at.size() == q.points.size());
+  std::size_t regular = 0;
+  for (std::size_t v = 0; v < q.points.size(); ++v) {
+    const std::size_t i = v % 5, j = v / 5;
+    const bool interior = i > 0 && i < 4 && j > 0 && j < 4;
+    CHECK(star.quads_at[v].size() == (interior ? 4u : (i % 4 == 0) + (j % 4 == 0) == 2 ? 1u : 2u));
+    CHECK(std::is_sorted(star.quads_at[v].begin(), star.quads_at[v].end()));
+    CHECK(star.regular_interior(v, loops) == interior);
+    regular += star.regular_interior(v, loops);
+  }
+  CHECK(regular == 9);
+  CHECK(star.ring(2 * 5 + 2).size() == 16);  // the centre: every quad
+  CHECK(star.ring(1 * 5 + 1).size() == 9);   // beside a corner: a 3 x 3 block
+  CHECK(star.ring(0).size() == 4);           // a corner of the square: a 2 x 2 block
+
+  const LatticeQuads before = q;
+  PointMoves moves(q);
+  const SurfaceLocation there{SurfaceLocation::Kind::face, -1, -1, 0, {0.2, 0.3, 0.5}};
+  moves.move(12, {Vec3(0.55, 0.45, 0), there});
+  moves.move(6, {Vec3(0.3, 0.2, 0), there});
+  moves.move(12, {Vec3(0.52, 0.48, 0), there});
+  CHECK(moves.count() == 2);
+  CHECK(moves.moved(12));
+  CHECK(q.points[12] == Vec3(0.52, 0.48, 0));
+  CHECK(moves.original().points[12] == before.points[12]);
+  moves.put_back(6);
+  CHECK(!moves.moved(6));
+  CHECK(q.points[6] == before.points[6]);
+  CHECK(moves.count() == 1);
+  moves.undo_all();
+  CHECK(moves.count() == 0);
+  CHECK(q.points == before.points);
 }
