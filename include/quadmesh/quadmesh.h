@@ -23,6 +23,7 @@
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/core/triangle_soup.h"
 #include "libquadmesh/extract/lattice_quads.h"
+#include "libquadmesh/pipeline/acceptance_criteria.h"
 #include "libquadmesh/pipeline/mesh_quads.h"
 #include "libquadmesh/quality/hausdorff.h"
 #include "libquadmesh/quality/quad_quality.h"

@@ -381,7 +381,7 @@ Eigen::VectorXd period_coefficients(const SurfaceAdjacency& adjacency, const Fac
 /// xi = T + the corrections; the rounded periods as they came out go to q.periods.
 PeriodCorrection correct_periods(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                                  const FaceMap& target, const std::vector<FaceMap>& basis,
-                                 const PeriodLoops& loops, Quantization& q) {
+                                 const NamedLoops& loops, Quantization& q) {
   const std::size_t nF = soup.triangles.size();
   const Eigen::Index K = static_cast<Eigen::Index>(basis.size());
   std::vector<NamedPath> u_loops, v_loops;
@@ -429,9 +429,8 @@ struct DirichletValues {
 /// Rule 2: V constant on each boundary loop, the loops' levels (the V-integrals of
 /// the bridges) rounded together (round_levels); the bridges' periods go to q.periods.
 void fix_boundary_levels(const SurfaceAdjacency& adjacency, const FaceMap& target, const FaceMap& xi,
-                         const PeriodLoops& loops, DirichletValues& dv, Quantization& q) {
-  for (std::size_t k = 0; k < loops.boundaries.size(); ++k)
-    for (int v : loops.boundaries[k]) dv.loop_of[static_cast<std::size_t>(v)] = static_cast<int>(k);
+                         const NamedLoops& loops, DirichletValues& dv, Quantization& q) {
+  dv.loop_of = boundary_loop_of_vertex(loops, dv.loop_of.size());
   std::vector<double> level(loops.boundaries.size(), 0.0);
   for (std::size_t k = 1; k < loops.boundaries.size(); ++k)
     level[k] = path_integral(adjacency, xi, loops.bridges[k - 1], false).imag();
@@ -453,7 +452,7 @@ void fix_boundary_levels(const SurfaceAdjacency& adjacency, const FaceMap& targe
 /// collapse): a zero that would round onto the one before it takes the next integer
 /// in the direction of travel.
 void choose_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const FaceMap& xi,
-                  const FaceMap& Xi, const std::vector<ZeroVertex>& zeros, const PeriodLoops& loops,
+                  const FaceMap& Xi, const std::vector<ZeroVertex>& zeros, const NamedLoops& loops,
                   DirichletValues& dv, Quantization& q) {
   std::unordered_map<int, const ZeroVertex*> corner_at;
   for (const ZeroVertex& z : zeros) {
@@ -584,7 +583,7 @@ void solve_psi(const TriangleSoup& soup, const FaceMap& target, const FaceMap& C
 
 Quantization quantize(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                       const FaceMap& target, const std::vector<FaceMap>& basis,
-                      const std::vector<ZeroVertex>& zeros, const PeriodLoops& loops) {
+                      const std::vector<ZeroVertex>& zeros, const NamedLoops& loops) {
   QM_ASSERT(!loops.boundaries.empty() && !basis.empty());
   const std::size_t nV = soup.points.size();
   Quantization q;

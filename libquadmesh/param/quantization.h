@@ -36,10 +36,6 @@
 
 namespace qm {
 
-/// The loops of section 2 as vertex sequences on S: named_loops() gives them;
-/// boundary 0 is the reference.
-using PeriodLoops = NamedLoops;
-
 struct LoopPeriod {
   std::string loop;  ///< "handle_0", "boundary_1", "bridge_1" ...
   Complex before;    ///< period of T (bridges: the V-integral only, as the imaginary part)
@@ -65,7 +61,7 @@ struct Quantization {
 /// refined stars; `cones` holds the zeros and the corners. Throws qm::Error(solver) if a factorization fails.
 Quantization quantize(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                       const FaceMap& target, const std::vector<FaceMap>& basis,
-                      const std::vector<ZeroVertex>& cones, const PeriodLoops& loops);
+                      const std::vector<ZeroVertex>& cones, const NamedLoops& loops);
 
 /// Round to the nearest integer, but away from 0 when |x| > 1/4 (rule 4: a period
 /// that was not 0 must not collapse).

@@ -101,6 +101,7 @@ QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, con
   if (surface_adjacency(soup).boundary_loops.empty())
     throw Error(ErrorCode::unsupported,
                 "quad meshing of closed surfaces is not implemented yet (their forms are: see `quadmesh forms`)");
+  require_within_work_limit(soup, options);
   if (!long_edge_split_allowed(options)) return mesh_quads_on(std::move(soup), options, progress);
   // Triangles wider than the quads carry one linear map across several quads:
   // where they cover enough of the area, split them (long_edges.h). The finer

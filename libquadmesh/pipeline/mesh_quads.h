@@ -41,6 +41,10 @@ struct QuadMeshOptions {
   double size = 0.0;        ///< target quad edge length; 0: size_relative or 1/60 of the bounding-box diagonal
   double size_relative = 0.0;  ///< target edge length as a fraction of the bounding-box diagonal
   std::size_t quads = 0;    ///< target quad count; wins over size when not 0
+  /// Work limit: mesh_quads refuses (qm::Error, bad_input) before any work when
+  /// the size or count asked for implies more quads than this (implied_quad_count);
+  /// 0: no limit. A few million quads take minutes and gigabytes.
+  std::size_t max_quads = 5000000;
   double corner_angle_deg = 30.0;
   /// With "auto": boundary vertices where the surface turns this much or more
   /// (degrees; a slit's end, the sharp corner of a small hole) get a zero of h, so
@@ -105,6 +109,12 @@ struct QuadMeshResult {
   std::size_t long_edges_split = 0;
   bool long_edges_kept = false;  ///< the result is the split input's
 };
+
+/// The quads the options ask for on this surface: QuadMeshOptions::quads when
+/// given, else surface area / size^2 (the size as mesh_quads reads it: size,
+/// size_relative x the bounding-box diagonal, or 1/60 of it). What max_quads is
+/// compared with; infinite or NaN for a size of 0 or NaN.
+double implied_quad_count(const TriangleSoup& soup, const QuadMeshOptions& options);
 
 using ProgressCallback = std::function<void(const std::string&)>;
 

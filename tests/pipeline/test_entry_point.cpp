@@ -37,7 +37,8 @@ TEST_CASE("entry point: an annulus from arrays gives a grid of quads, one ring o
   CHECK(r.doubled_genus == 1);
   REQUIRE(!r.quads.quads.empty());
   const QuadQuality q = quad_quality(polygon_mesh(r.quads), &r.surface);
-  CHECK(q.min_scaled_jacobian > 0.3);
+  CHECK(q.min_scaled_jacobian >= AcceptanceCriteria{}.min_scaled_jacobian);
+  CHECK(q.angle_dev_mean <= AcceptanceCriteria{}.max_mean_angle_deviation_deg);
   CHECK(q.inverted == 0);
   // chi 0 and no corner: the grid has no singular vertex at all
   CHECK(q.irregular_interior == 0);
@@ -67,4 +68,24 @@ TEST_CASE("entry point: indices out of range and non-finite points are named") {
   std::tie(code, message) = error_of(soup);
   CHECK(code == ErrorCode::bad_input);
   CHECK(message.find("vertex 3") != std::string::npos);
+}
+
+TEST_CASE("entry point: a size implying more quads than max_quads is refused before any work") {
+  const TriangleSoup annulus = test::annulus(1.0, 2.0, 2, 12);
+  QuadMeshOptions options;
+  options.size_relative = 1e-9;
+  // the 12-gons' areas 12 - 3 = 9 over (1e-9 x the diagonal 4 sqrt 2)^2: 2.8e17 quads
+  const double size = 1e-9 * 4 * std::sqrt(2.0);
+  CHECK(implied_quad_count(annulus, options) == doctest::Approx(9 / (size * size)).epsilon(1e-9));
+  try {
+    mesh_quads(annulus.points, annulus.triangles, options);
+    FAIL("no qm::Error");
+  } catch (const Error& e) {
+    CHECK(e.code() == ErrorCode::bad_input);
+    CHECK(e.option() == "QuadMeshOptions::max_quads");
+    CHECK(std::string(e.what()).find("more than QuadMeshOptions::max_quads 5000000") != std::string::npos);
+  }
+  options.max_quads = 0;  // no limit: the count is still what it is
+  options.size_relative = 0.05;
+  CHECK(implied_quad_count(annulus, options) < 2000);
 }

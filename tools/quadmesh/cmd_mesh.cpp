@@ -37,11 +37,10 @@ void check_files(const MeshOptions& options) {
 /// --size implies (area / size^2, as mesh_quads scales h) against --max-quads.
 void check_quad_estimate(const MeshOptions& options, const TriangleSoup& soup) {
   if (options.quads > 0) return;  // checked with the files
-  const double diagonal = bounding_box_diagonal(soup.points, soup.triangles);
-  const double size = options.size > 0            ? options.size
-                      : options.size_relative > 0 ? options.size_relative * diagonal
-                                                  : diagonal / 60.0;
-  const double estimate = total_area(soup) / (size * size);
+  QuadMeshOptions asked_for;
+  asked_for.size = options.size;
+  asked_for.size_relative = options.size_relative;
+  const double estimate = implied_quad_count(soup, asked_for);
   if (!(estimate > static_cast<double>(options.max_quads))) return;
   const std::string asked = options.size > 0            ? fmt::format("--size {:g}", options.size)
                             : options.size_relative > 0 ? fmt::format("--size {:g}%", 100 * options.size_relative)
@@ -244,6 +243,7 @@ int run_mesh(const MeshOptions& options, const CommonOptions& common) {
   mesher.size = options.size;
   mesher.size_relative = options.size_relative;
   mesher.quads = options.quads;
+  mesher.max_quads = options.max_quads;
   mesher.corner_angle_deg = options.corner_angle_deg;
   mesher.tip_angle_deg = options.tip_angle_deg;
   mesher.max_deviation = options.max_deviation;

@@ -16,6 +16,7 @@ const std::pair<const char*, const char*> kFlags[] = {
     {"QuadMeshOptions::size_relative", "--size"},
     {"QuadMeshOptions::size", "--size"},
     {"QuadMeshOptions::quads", "--quads"},
+    {"QuadMeshOptions::max_quads", "--max-quads"},
     {"QuadMeshOptions::tip_angle_deg", "--tip-angle"},
     {"QuadMeshOptions::max_deviation_relative", "--max-deviation"},
     {"QuadMeshOptions::max_deviation", "--max-deviation"},

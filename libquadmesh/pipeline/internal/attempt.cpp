@@ -146,7 +146,7 @@ void untangle_folds(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
 /// The quantization (quantization.h), then the local repair of the folds it left
 /// and the cones the untangled map hides (r.quantization, untangle, branch_points).
 void quantize_and_untangle(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const FaceMap& target,
-                           const std::vector<FaceMap>& basis, const PeriodLoops& loops, Stages& stages,
+                           const std::vector<FaceMap>& basis, const NamedLoops& loops, Stages& stages,
                            QuadMeshResult& r) {
   r.quantization = quantize(soup, adjacency, target, basis, r.zero_vertices, loops);
   auto unsafe = [&] {
@@ -167,14 +167,12 @@ void quantize_and_untangle(const TriangleSoup& soup, const SurfaceAdjacency& adj
 
 /// The quads of the lattice (r.quads, extraction) and the input boundary loop of
 /// each quad point (r.boundary_loop_of_point).
-void extract_quads(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const PeriodLoops& loops,
+void extract_quads(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const NamedLoops& loops,
                    Stages& stages, QuadMeshResult& r) {
   stages.next("extraction", "extracting the quads");
   r.quads = extract_lattice_quads(soup, adjacency, r.quantization.param, r.extraction);
   compact(r.quads);
-  std::vector<int> loop_of(soup.points.size(), -1);
-  for (std::size_t k = 0; k < loops.boundaries.size(); ++k)
-    for (int v : loops.boundaries[k]) loop_of[static_cast<std::size_t>(v)] = static_cast<int>(k);
+  const std::vector<int> loop_of = boundary_loop_of_vertex(loops, soup.points.size());
   for (const SurfaceLocation& loc : r.quads.locations) {
     int loop = -1;
     if (loc.kind == SurfaceLocation::Kind::vertex) loop = loop_of[static_cast<std::size_t>(loc.a)];
@@ -192,14 +190,7 @@ void note_stray_boundary(QuadMeshResult& r) {
   if (!stray.empty()) r.first_stray_point = r.quads.points[static_cast<std::size_t>(stray.front())];
 }
 
-PeriodLoops period_loops(const TriangleSoup& soup) {
-  const NamedLoops named = named_loops(to_surface_mesh(soup));
-  PeriodLoops loops;
-  loops.boundaries = named.boundaries;
-  loops.bridges = named.bridges;
-  loops.handles = named.handles;
-  return loops;
-}
+NamedLoops period_loops(const TriangleSoup& soup) { return named_loops(to_surface_mesh(soup)); }
 
 Candidate mesh_attempt(const FormSetup& setup, const QuadMeshOptions& options, const AttemptRequest& request,
                        Stages& stages) {
@@ -225,7 +216,7 @@ Candidate mesh_attempt(const FormSetup& setup, const QuadMeshOptions& options, c
   }
   stages.next("quantization", "quantizing (integer periods, boundary levels, zeros and corners on the lattice)");
   const SurfaceAdjacency adjacency = surface_adjacency(soup);
-  const PeriodLoops loops = period_loops(soup);
+  const NamedLoops loops = period_loops(soup);
   quantize_and_untangle(soup, adjacency, target, basis, loops, stages, r);
   if (options.rotate)  // i h: a quarter turn of the plane maps the lattice onto itself
     r.quantization.param = scaled(r.quantization.param, Complex(0, 1));

@@ -17,7 +17,7 @@ namespace qm {
 struct FormSetup {
   TriangleSoup soup;              ///< S as the forms were computed on it (chords split, perhaps remeshed)
   std::vector<FaceMap> basis;     ///< the symmetric forms h_k on `soup`
-  PeriodLoops loops;              ///< the loops the quantization rounds, on `soup`
+  NamedLoops loops;              ///< the loops the quantization rounds, on `soup`
   double area = 0;                ///< of the input as given (before remeshing and chord splits)
   double diagonal = 0;            ///< of the input's bounding box (as given)
   /// The result's fields every attempt shares: remeshing, forms, requested size,
@@ -28,7 +28,7 @@ struct FormSetup {
 };
 
 /// The loops of H_1(S) whose periods the quantization rounds (forms/named_loops.h).
-PeriodLoops period_loops(const TriangleSoup& soup);
+NamedLoops period_loops(const TriangleSoup& soup);
 
 /// Counts (and locates the first of) the quads' boundary points off S's boundary
 /// (QuadMeshResult::stray_boundary_points, first_stray_point).

@@ -80,6 +80,23 @@ RequestedSize requested_size(const TriangleSoup& soup, const QuadMeshOptions& op
   return r;
 }
 
+double implied_quad_count(const TriangleSoup& soup, const QuadMeshOptions& options) {
+  if (options.quads > 0) return static_cast<double>(options.quads);
+  const double size = requested_size(soup, options).size;
+  return surface_area(soup) / (size * size);
+}
+
+void require_within_work_limit(const TriangleSoup& soup, const QuadMeshOptions& options) {
+  if (options.max_quads == 0) return;
+  const double quads = implied_quad_count(soup, options);
+  if (quads <= static_cast<double>(options.max_quads)) return;  // NaN refused too
+  throw Error(ErrorCode::bad_input,
+              fmt::format("the size asked for implies about {:.3g} quads (surface area / size^2), more than "
+                          "QuadMeshOptions::max_quads {}",
+                          std::min(quads, 1e300), options.max_quads),
+              "QuadMeshOptions::max_quads");
+}
+
 FormSetup prepare_forms(TriangleSoup soup, const QuadMeshOptions& options, Stages& stages) {
   FormSetup setup;
   QuadMeshResult& r = setup.preamble;

@@ -21,6 +21,10 @@ inline constexpr double default_size_divisions = 60.0;
 
 RequestedSize requested_size(const TriangleSoup& soup, const QuadMeshOptions& options);
 
+/// Throws qm::Error(bad_input) naming QuadMeshOptions::max_quads when the options
+/// imply more quads than it allows (implied_quad_count, mesh_quads.h).
+void require_within_work_limit(const TriangleSoup& soup, const QuadMeshOptions& options);
+
 /// Remeshes when asked (RemeshPolicy), computes the symmetric forms and chooses
 /// the coefficients of h: QuadMeshOptions::coefficients, ::form, or auto (the most
 /// uniform form, with zeros at the boundary tips). Throws qm::Error(bad_input)
