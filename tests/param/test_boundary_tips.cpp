@@ -96,7 +96,8 @@ TEST_CASE("tip_leading_coefficient recovers f_0 of h = sum f_n z^n dz, z = w^(pi
   }
 }
 
-TEST_CASE("a plate whose hole has a 16-degree corner: a zero at the tip, four quads round it") {
+TEST_CASE("a plate whose hole has a 16-degree corner: a zero at the tip, four quads round it" *
+          doctest::test_suite("slow")) {
   // examples/plate-v-hole.geo: 100 x 60 with a round hole and a triangular one
   // whose sharpest corner (at (50, 30)) is 16.3 degrees: the plate turns 343.7
   // degrees round it

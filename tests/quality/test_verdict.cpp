@@ -180,7 +180,8 @@ double mean_of(const std::vector<double>& v) { return std::accumulate(v.begin(),
 
 }  // namespace
 
-TEST_CASE("the quality report of fertility-3holes at 1.5%, recomputed independently") {
+TEST_CASE("the quality report of fertility-3holes at 1.5%, recomputed independently" *
+          doctest::test_suite("slow")) {
   // the example: its old figure against vertex normals was 0.387, Verdict's 0.054
   const TriangleSoup input = analyze_topology(io::read_surface(test::shared_mesh("fertility-3holes.obj")).soup).soup;
   QuadMeshOptions options;

@@ -121,7 +121,8 @@ void expect_quad_mesh(const std::string& input, const std::string& size, int chi
   for (const std::string& group : curve_groups) CHECK(names.find("\"" + group + "\"") != std::string::npos);
 }
 
-TEST_CASE("mesh: pure quads with the input's topology, quality and groups (plate, kitten)") {
+TEST_CASE("mesh: pure quads with the input's topology, quality and groups (plate, kitten)" *
+          doctest::test_suite("slow")) {
   expect_quad_mesh(test::example("plate-two-holes.geo"), "2", -1, 3, {"hole_left", "hole_right", "outer"});
   // kitten's ears: 1.5% of the diagonal after chord refinement; corners moved onto
   // their tips (extract/quad_fitting.h) bring that under 1%
@@ -144,7 +145,8 @@ WrittenMesh mesh_geo(const std::string& dir, const std::string& geo, const std::
   return {run, std::filesystem::exists(report) ? nlohmann::json::parse(slurp(report)) : nlohmann::json()};
 }
 
-TEST_CASE("mesh: quads far from the input on a long end are written, with one warning line that names the place") {
+TEST_CASE("mesh: quads far from the input on a long end are written, with one warning line that names the place" *
+          doctest::test_suite("slow")) {
   // an L-plate whose arm is two widths long: the form decays along it, the quads at
   // its end are 20 times the size and 17% of the diagonal from it
   const WrittenMesh m = mesh_geo(test::scratch_dir("cli_far"),
@@ -169,7 +171,8 @@ TEST_CASE("mesh: quads far from the input on a long end are written, with one wa
   CHECK(std::atof(lines[0].c_str() + at + std::string(" near (").size()) > 60.0);
 }
 
-TEST_CASE("mesh: inverted quads are written, with one warning line that names the first, even with -q") {
+TEST_CASE("mesh: inverted quads are written, with one warning line that names the first, even with -q" *
+          doctest::test_suite("slow")) {
   // bunny-open at 1.2% without refinement and without smoothing (which mends
   // them): quads turn over where the scan's hole boundary zigzags back on itself
   const std::string dir = test::scratch_dir("cli_inverted");
@@ -190,7 +193,8 @@ TEST_CASE("mesh: inverted quads are written, with one warning line that names th
   CHECK(lines[0].find("the first near (") != std::string::npos);
 }
 
-TEST_CASE("mesh: a coarse plate whose first rounding drops cells is rounded again: no gap, no warning") {
+TEST_CASE("mesh: a coarse plate whose first rounding drops cells is rounded again: no gap, no warning" *
+          doctest::test_suite("slow")) {
   // a 120 x 40 plate with six holes and rounded corners, meshed coarsely (2.5%):
   // beside one hole the untangling left a fold it could not remove, and the cells
   // over it were dropped (a gap and a warning); the same form rounded at a nearby
@@ -212,7 +216,8 @@ TEST_CASE("mesh: a coarse plate whose first rounding drops cells is rounded agai
   for (const std::string& line : m.run.error_lines()) CHECK(line.find("could not be made into quads") == std::string::npos);
 }
 
-TEST_CASE("mesh: quads whose boundary strays from the input's are written with one warning line naming the first") {
+TEST_CASE("mesh: quads whose boundary strays from the input's are written with one warning line naming the first" *
+          doctest::test_suite("slow")) {
   // a 150 x 50 plate with six holes at 1.2% (p7 of scripts/plate-sweep): a hole 4.15
   // from the plate's edge, with two boundary zeros on its far side; the rounding
   // leaves quads whose boundary cuts across that hole's arc, with the input's Euler
@@ -235,7 +240,8 @@ TEST_CASE("mesh: quads whose boundary strays from the input's are written with o
   CHECK(stray_lines == 1);
 }
 
-TEST_CASE("mesh: an L-bracket with a long arm fails fast, naming the long end (a limit of the method)") {
+TEST_CASE("mesh: an L-bracket with a long arm fails fast, naming the long end (a limit of the method)" *
+          doctest::test_suite("slow")) {
   // 200 x 40 with an arm 100 long and 20 wide: every symmetric form decays like
   // exp(-pi x / 20) along it. One basis form was almost 0 along a hole and was
   // scaled a thousandfold to give that loop 4 edges: the lattice took 15 GB.

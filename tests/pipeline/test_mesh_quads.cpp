@@ -110,7 +110,8 @@ TEST_CASE("annulus: a singularity-free grid, integer periods, boundaries on inte
     }
 }
 
-TEST_CASE("plate with two holes (CAD): one interior zero, corners on the lattice") {
+TEST_CASE("plate with two holes (CAD): one interior zero, corners on the lattice" *
+          doctest::test_suite("slow")) {
   const TriangleSoup input = analysed(test::example("plate-two-holes.geo"));
   const QuadMeshResult r = mesh_quads(input, {});
   check_result(input, r, -1, 3);
@@ -131,7 +132,8 @@ TEST_CASE("plate with two holes (CAD): one interior zero, corners on the lattice
   CHECK(rounding_residual(periods, r.scale) <= rounding_residual(periods, r.scale / std::sqrt(r.base_density)));
 }
 
-TEST_CASE("curved shell with two holes (CAD): two boundary zeros on the small hole kept apart, no fold left") {
+TEST_CASE("curved shell with two holes (CAD): two boundary zeros on the small hole kept apart, no fold left" *
+          doctest::test_suite("slow")) {
   const TriangleSoup input = analysed(test::example("curved-shell-holes.geo"));
   QuadMeshOptions options;
   options.size_relative = 0.015;
@@ -151,7 +153,8 @@ TEST_CASE("curved shell with two holes (CAD): two boundary zeros on the small ho
   CHECK(q.hausdorff_rel < AcceptanceCriteria{}.max_hausdorff_relative);
 }
 
-TEST_CASE("CAD plates that had gaps: branch points off the lattice, overlapping corner disks") {
+TEST_CASE("CAD plates that had gaps: branch points off the lattice, overlapping corner disks" *
+          doctest::test_suite("slow")) {
   // A flat 150 x 80 plate with five holes: two interior zeros within a cell (in the
   // image) of a hole's level were made boundary zeros, but the untangled map still
   // branched where h vanishes, off the lattice: 2 cells covered twice were dropped.
@@ -200,7 +203,8 @@ TEST_CASE("CAD plates that had gaps: branch points off the lattice, overlapping 
   }
 }
 
-TEST_CASE("two boundary zeros of a hole beside a narrow part stay on distinct lattice points: no gap") {
+TEST_CASE("two boundary zeros of a hole beside a narrow part stay on distinct lattice points: no gap" *
+          doctest::test_suite("slow")) {
   // p7 of scripts/plate-sweep: the hole 4.15 from the plate's edge has two boundary
   // zeros on its far side, under half a cell apart in the image. Merged into one
   // zero of order 2, the boundary arc between them collapsed, the map folded along
@@ -227,7 +231,8 @@ TEST_CASE("two boundary zeros of a hole beside a narrow part stay on distinct la
   CHECK(boundary_zeros == 6);
 }
 
-TEST_CASE("a plate whose first rounding leaves folds is rounded again at a nearby scale") {
+TEST_CASE("a plate whose first rounding leaves folds is rounded again at a nearby scale" *
+          doctest::test_suite("slow")) {
   // A 150 x 50 plate with five holes, two of them 6.6 apart: at the scale of 1.5%
   // the untangling left folds between them and 7 cells were dropped (a gap,
   // Hausdorff 3%). The same form rounded at a few percent more or fewer quads has
@@ -246,7 +251,8 @@ TEST_CASE("a plate whose first rounding leaves folds is rounded again at a nearb
   CHECK(std::abs(static_cast<double>(r.quads.quads.size()) / r.expected_quads - 1) <= 0.15);
 }
 
-TEST_CASE("pig: the folds near its cones are untangled, the extraction drops no cell") {
+TEST_CASE("pig: the folds near its cones are untangled, the extraction drops no cell" *
+          doctest::test_suite("slow")) {
   const TriangleSoup input = analysed(test::shared_mesh("pig.off"));
   QuadMeshOptions options;
   options.size_relative = 0.015;
@@ -278,7 +284,8 @@ TEST_CASE("pig: the folds near its cones are untangled, the extraction drops no 
   CHECK(qr.min_scaled_jacobian >= std::min(q.min_scaled_jacobian, AcceptanceCriteria{}.min_scaled_jacobian));
 }
 
-TEST_CASE("flatmesh: triangles wider than the quads are split, and the better of the two meshes kept") {
+TEST_CASE("flatmesh: triangles wider than the quads are split, and the better of the two meshes kept" *
+          doctest::test_suite("slow")) {
   // its longest edges are 3 quads long (0.1 to 1.16 around a size of 0.38): one
   // linear map per triangle across several quads, mean angle deviation 5.28 degrees
   // as the extraction leaves it (no smoothing), 4.84 on the split triangulation
@@ -301,7 +308,7 @@ TEST_CASE("flatmesh: triangles wider than the quads are split, and the better of
   CHECK(smoothed.angle_smoothing.angle_dev_after < smoothed.angle_smoothing.angle_dev_before);
 }
 
-TEST_CASE("kitten with two holes: genus 1, two zeros of order 1") {
+TEST_CASE("kitten with two holes: genus 1, two zeros of order 1" * doctest::test_suite("slow")) {
   const TriangleSoup input = analysed(test::shared_mesh("kitten-2holes.obj"));
   QuadMeshOptions options;
   options.size_relative = 0.015;
@@ -310,7 +317,8 @@ TEST_CASE("kitten with two holes: genus 1, two zeros of order 1") {
   CHECK(r.zeros.doubled_order_sum == 4);
 }
 
-TEST_CASE("fertility: corners moved onto its extremities bring the quads within 1% of the diagonal") {
+TEST_CASE("fertility: corners moved onto its extremities bring the quads within 1% of the diagonal" *
+          doctest::test_suite("slow")) {
   const TriangleSoup input = analysed(test::shared_mesh("fertility-3holes.obj"));
   const double diagonal = bounding_box_diagonal(input.points, input.triangles);
   QuadMeshOptions options;
@@ -325,7 +333,8 @@ TEST_CASE("fertility: corners moved onto its extremities bring the quads within 
   CHECK(q.hausdorff_rel < AcceptanceCriteria{}.max_hausdorff_relative);
 }
 
-TEST_CASE("aqua-center: splitting chords brings the quads within the tolerance, singular vertices unchanged") {
+TEST_CASE("aqua-center: splitting chords brings the quads within the tolerance, singular vertices unchanged" *
+          doctest::test_suite("slow")) {
   const TriangleSoup input = analysed(test::shared_mesh("aqua-center.off"));
   const double diagonal = bounding_box_diagonal(input.points, input.triangles);
   QuadMeshOptions options;
@@ -356,7 +365,8 @@ TEST_CASE("aqua-center: splitting chords brings the quads within the tolerance, 
   CHECK(q.irregular_interior == q0.irregular_interior);
 }
 
-TEST_CASE("bunny at 1.5%: smoothing the worst quads lifts the minimum scaled Jacobian over 0.3") {
+TEST_CASE("bunny at 1.5%: smoothing the worst quads lifts the minimum scaled Jacobian over 0.3" *
+          doctest::test_suite("slow")) {
   // a boundary quad at a hole rim that zigzags in the scan, and quads beside it
   const TriangleSoup input = analysed(test::shared_mesh("bunny-open.obj"));
   QuadMeshOptions options;
@@ -377,7 +387,8 @@ TEST_CASE("bunny at 1.5%: smoothing the worst quads lifts the minimum scaled Jac
   CHECK(q.boundary_loops == 5);
 }
 
-TEST_CASE("chord refinement never turns a quad over: a round that would is undone") {
+TEST_CASE("chord refinement never turns a quad over: a round that would is undone" *
+          doctest::test_suite("slow")) {
   // bunny-open at 2%: splitting the chords through its ears places a quad centre
   // where the split quads would lose shape or turn over (at 2%, before the scale was
   // chosen for its rounding, 1 inverted quad without the guard); that split is
