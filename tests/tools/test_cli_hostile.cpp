@@ -154,7 +154,7 @@ TEST_CASE("work limit: a size or count that implies too many quads is refused in
   const std::string out = quoted(dir + "/out.msh");
   // 9 GB and 100 s to end in std::bad_alloc before the limit: now 2 GB of address
   // space and 60 s are ample (status 2, not 124 for the time-out, not a crash)
-  for (const std::string& request : {"--size 1e-9%", "--size 1e-7", "--quads 100000000"}) {
+  for (const std::string request : {"--size 1e-9%", "--size 1e-7", "--quads 100000000"}) {
     CAPTURE(request);
     const auto start = std::chrono::steady_clock::now();
     const Run run = test::shell_with_quadmesh(test::address_space_bound(2000000) + "timeout 60 QUADMESH mesh " +
@@ -206,7 +206,7 @@ TEST_CASE("messages: --form counts from 1, unknown commands are named, quality r
                             quoted(dir + "/out.msh") + " --coeffs 0,0,-0"),
                    2, "--coeffs: all coefficients are 0");
 
-  for (const std::string& args : {"frobnicate x.obj", "-q frobnicate x.obj", "--cad-mesh-size 2 frobnicate"}) {
+  for (const std::string args : {"frobnicate x.obj", "-q frobnicate x.obj", "--cad-mesh-size 2 frobnicate"}) {
     CAPTURE(args);
     const Run run = quadmesh(args);
     CHECK(run.status == 2);
@@ -231,7 +231,7 @@ TEST_CASE("messages: --form counts from 1, unknown commands are named, quality r
       reason = info.error_lines()[0].substr(std::string("quadmesh: error: ").size());  // refused when read
     CAPTURE(reason);
     REQUIRE_FALSE(reason.empty());
-    for (const std::string& json : {"", " --json"}) {
+    for (const std::string json : {"", " --json"}) {
       const Run quality = quadmesh("quality " + quoted(path) + json);
       expect_one_error(quality, 3, reason);
       CHECK(quality.out.empty());
