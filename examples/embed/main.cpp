@@ -36,7 +36,7 @@ int main() {
   plate_with_two_holes(60, 20, 0.05, points, triangles);
 
   qm::QuadMeshOptions options;
-  options.size_relative = 0.03;  // quads 3% of the bounding-box diagonal
+  options.size_relative = 0.015;  // quads 1.5% of the bounding-box diagonal
   try {
     const qm::QuadMeshResult result = qm::mesh_quads(points, triangles, options);
     const qm::QuadQuality q = qm::quad_quality(qm::polygon_mesh(result.quads), &result.surface);
