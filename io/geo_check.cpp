@@ -105,7 +105,8 @@ struct Checker {
                            bool allowable = true) const {
     throw Error(ErrorCode::bad_input,
                 fmt::format("{}: line {}: {}; refused{}", shown, line, what,
-                            allowable ? " (--allow-geo-commands allows it)" : ""));
+                            allowable ? " (CadSandbox::allow_geo_commands allows it)" : ""),
+                allowable ? "CadSandbox::allow_geo_commands" : "");
   }
 
   void check_file(const fs::path& file, const std::string& shown) {

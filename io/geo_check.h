@@ -13,7 +13,7 @@
 namespace qm::io {
 
 /// Throws qm::Error(bad_input) with one line "FILE: line N: COMMAND ...; refused
-/// (--allow-geo-commands allows it)" for the first command of the script `path`
+/// (CadSandbox::allow_geo_commands allows it)" for the first command of the script `path`
 /// (or of a .geo it includes, checked the same way) that runs a program, writes,
 /// creates or deletes a file, exits, or reads a file outside the script's folder
 /// or through a computed path. Include cycles and includes nested deeper than 20

@@ -36,7 +36,9 @@ namespace qm::io {
 
 namespace {
 
-[[noreturn]] void fail(const std::string& message) { throw Error(ErrorCode::bad_input, message); }
+[[noreturn]] void fail(const std::string& message, const std::string& option = {}) {
+  throw Error(ErrorCode::bad_input, message, option);
+}
 
 /// Appends polygon `corners` as triangles (a fan from its first corner).
 std::size_t add_polygon(TriangleSoup& soup, const std::vector<int>& corners, std::int64_t label) {
@@ -302,16 +304,18 @@ SurfaceFile read_with_gmsh_child(const std::string& path, Format format, const R
       run_in_child([&] { return gmsh_child_main(path, format, options, fd); }, child);
 
   if (result.status == ChildStatus::timeout)
-    fail(fmt::format("{}: Gmsh did not finish within {:g} s (--cad-timeout): stopped; a script "
-                     "that loops or a mesh size far too small for the model does this",
-                     path, sandbox.timeout_seconds));
+    fail(fmt::format("{}: Gmsh did not finish within {:g} s (CadSandbox::timeout_seconds): stopped; a "
+                     "script that loops or a mesh size far too small for the model does this",
+                     path, sandbox.timeout_seconds),
+         "CadSandbox::timeout_seconds");
   if (result.status == ChildStatus::crashed)
     fail(fmt::format("{}: Gmsh crashed (signal {})", path, result.signal));
   if (result.exit_code == exit_out_of_memory) {
     const double limit = static_cast<double>(
         std::min(child.memory_limit_bytes, current_address_space_limit()));
-    fail(fmt::format("{}: Gmsh needed more than {:.3g} GiB (--cad-memory)", path,
-                     limit / (1024.0 * 1024.0 * 1024.0)));
+    fail(fmt::format("{}: Gmsh needed more than {:.3g} GiB (CadSandbox::memory_gib)", path,
+                     limit / (1024.0 * 1024.0 * 1024.0)),
+         "CadSandbox::memory_gib");
   }
   auto decoded = decode_result(read_all(fd), format);
   if (decoded) {
@@ -329,10 +333,12 @@ SurfaceFile read_with_gmsh_child(const std::string& path, Format format, const R
 SurfaceFile read_with_gmsh(const std::string& path, Format format, const ReadOptions& options) {
   const double timeout = options.sandbox.timeout_seconds;
   if (!(std::isfinite(timeout) && timeout > 0))
-    throw Error(ErrorCode::bad_input, "--cad-timeout must be a positive number of seconds");
+    throw Error(ErrorCode::bad_input, "CadSandbox::timeout_seconds must be a positive number of seconds",
+                "CadSandbox::timeout_seconds");
   const double memory = options.sandbox.memory_gib;
   if (!(std::isfinite(memory) && memory >= 0))
-    throw Error(ErrorCode::bad_input, "--cad-memory must be a positive number of GiB");
+    throw Error(ErrorCode::bad_input, "CadSandbox::memory_gib must be a positive number of GiB",
+                "CadSandbox::memory_gib");
   if (format == Format::geo) check_geo_script(path, options.sandbox.allow_geo_commands);
   return options.sandbox.in_process ? read_with_gmsh_here(path, format, options)
                                     : read_with_gmsh_child(path, format, options);

@@ -143,11 +143,12 @@ TEST_CASE("SystemCall is refused unless --allow-geo-commands; comments and strin
 
   const std::string message = read_error(geo);
   CHECK(message == geo + ": line 5: SystemCall runs a shell command; refused "
-                         "(--allow-geo-commands allows it)");
+                         "(CadSandbox::allow_geo_commands allows it)");
   CHECK_FALSE(fs::exists(marker));
 
   check_refused(quadmesh("mesh " + quoted(geo) + " -o " + quoted(output)),
-                "plate.geo: line 5: SystemCall runs a shell command", output);
+                "plate.geo: line 5: SystemCall runs a shell command; refused (--allow-geo-commands allows it)",
+                output);
   CHECK_FALSE(fs::exists(marker));
 
   // allowed: the command runs and the plate meshes (option after the subcommand too)
@@ -189,7 +190,7 @@ TEST_CASE("writing, deleting and creating files is refused") {
     CAPTURE(command);
     const std::string geo = test::write_text(dir, "plate.geo", plate + command + "\n");
     CHECK(contains(read_error(geo), "plate.geo: " + needle));
-    CHECK(contains(read_error(geo), "; refused (--allow-geo-commands allows it)"));
+    CHECK(contains(read_error(geo), "; refused (CadSandbox::allow_geo_commands allows it)"));
     CHECK_FALSE(fs::exists(dir + "/OUT.txt"));
   }
   // Printf without a file and Print.* options are fine
@@ -229,7 +230,7 @@ TEST_CASE("includes: itself, a cycle, outside the folder, and the included scrip
       test::write_text(dir + "/sub", "plate.geo", plate + "Include \"../other.geo\";\n");
   CHECK(read_error(outside) ==
         outside + ": line 5: Include reads \"../other.geo\", outside the script's folder; refused "
-                  "(--allow-geo-commands allows it)");
+                  "(CadSandbox::allow_geo_commands allows it)");
   check_refused(quadmesh("mesh " + quoted(outside) + " -o " + quoted(output)),
                 "plate.geo: line 5: Include reads \"../other.geo\", outside the script's folder",
                 output);
@@ -249,7 +250,7 @@ TEST_CASE("Exit: refused as a command; allowed, it must leave a surface mesh") {
   const std::string output = dir + "/out.msh";
   const std::string geo = test::write_text(dir, "plate.geo", plate + "Exit;\n");
   CHECK(read_error(geo) == geo + ": line 5: Exit ends the program; refused "
-                                 "(--allow-geo-commands allows it)");
+                                 "(CadSandbox::allow_geo_commands allows it)");
   check_refused(quadmesh("mesh " + quoted(geo) + " -o " + quoted(output)),
                 "plate.geo: line 5: Exit ends the program", output);
 
@@ -272,8 +273,8 @@ TEST_CASE("a script that loops forever ends at --cad-timeout") {
   options.sandbox.timeout_seconds = 1;
   const auto start = std::chrono::steady_clock::now();
   CHECK(read_error(geo, options) ==
-        geo + ": Gmsh did not finish within 1 s (--cad-timeout): stopped; a script that loops or "
-              "a mesh size far too small for the model does this");
+        geo + ": Gmsh did not finish within 1 s (CadSandbox::timeout_seconds): stopped; a script that "
+              "loops or a mesh size far too small for the model does this");
   CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 20);
 
   const Run run = quadmesh("mesh " + quoted(geo) + " -o " + quoted(output) + " --cad-timeout 2",
@@ -333,7 +334,7 @@ TEST_CASE("--cad-timeout and --cad-memory take positive finite numbers") {
   }
   io::ReadOptions options;
   options.sandbox.timeout_seconds = std::numeric_limits<double>::quiet_NaN();
-  CHECK(contains(read_error(geo, options), "--cad-timeout must be a positive number"));
+  CHECK(contains(read_error(geo, options), "CadSandbox::timeout_seconds must be a positive number"));
 }
 
 TEST_CASE("the bundled examples read as before (counts of the in-process reader)") {

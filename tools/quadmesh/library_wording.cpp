@@ -23,6 +23,9 @@ const std::pair<const char*, const char*> kFlags[] = {
     {"QuadMeshOptions::remesh_size", "--remesh-size"},
     {"QuadMeshOptions::rotate", "--rotate"},
     {"largest_component()", "--largest-component"},
+    {"CadSandbox::timeout_seconds", "--cad-timeout"},
+    {"CadSandbox::memory_gib", "--cad-memory"},
+    {"CadSandbox::allow_geo_commands", "--allow-geo-commands"},
 };
 
 void replace_all(std::string& text, const std::string& from, const std::string& to) {
