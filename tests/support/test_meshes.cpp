@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 namespace qm::test {
 
@@ -156,6 +157,23 @@ TriangleSoup grid(int n) {
     for (int j = 0; j < n; ++j) {
       s.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
       s.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return s;
+}
+
+TriangleSoup l_shape(int n) {
+  TriangleSoup s;
+  std::map<std::pair<int, int>, int> id;
+  auto point = [&](int i, int j) {
+    const auto [it, fresh] = id.emplace(std::make_pair(i, j), static_cast<int>(s.points.size()));
+    if (fresh) s.points.emplace_back(double(i) / n, double(j) / n, 0.0);
+    return it->second;
+  };
+  for (int i = 0; i < 2 * n; ++i)
+    for (int j = 0; j < 2 * n; ++j) {
+      if (i >= n && j >= n) continue;
+      s.triangles.push_back({point(i, j), point(i + 1, j), point(i + 1, j + 1)});
+      s.triangles.push_back({point(i, j), point(i + 1, j + 1), point(i, j + 1)});
     }
   return s;
 }

@@ -49,6 +49,9 @@ TriangleSoup bow_tie();
 TriangleSoup book();
 /// A square grid in the plane, n x n cells, each split in two (a disk).
 TriangleSoup grid(int n);
+/// The L-shape [0, 2] x [0, 2] minus (1, 2] x (1, 2], on a grid of n x n cells per
+/// unit square, each split in two (a disk with five convex corners and one concave).
+TriangleSoup l_shape(int n);
 
 /// Writes a soup as OBJ (for command-line tests).
 void write_obj(const TriangleSoup& soup, const std::string& path);

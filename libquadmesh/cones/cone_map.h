@@ -1,0 +1,32 @@
+// An integer-grid map with prescribed quarter-turn cones (method.md section 11),
+// stage by stage: the cone set's Gauss-Bonnet check, the flat cone metric, its
+// cross field, the cut through the cones, the seamless map and its quantization.
+// The quads are then the map's lattice cells (extract/lattice_quads.h), with
+// rotations across the cut.
+#pragma once
+
+#include "libquadmesh/cones/cone_set.h"
+#include "libquadmesh/cones/seamless_map.h"
+
+namespace qm {
+
+struct ConeMap {
+  FaceMap map;
+  std::vector<int> quads;  ///< per vertex, the quads it is meant to be in
+  Eigen::VectorXd u;       ///< the cone metric's log scale per vertex
+  CrossField field;
+  CutGraph cut;
+  SeamlessMapReport report;
+};
+
+/// `size` the target quad edge (> 0). Throws qm::Error: bad_input when the cones
+/// break Gauss-Bonnet or name no vertex; unsupported when a boundary loop cannot
+/// be aligned with the field (several boundary loops need cones placed for it:
+/// the placement stage); solver when a solve fails.
+ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const std::vector<Cone>& cones,
+                 double size);
+
+/// V - E + F of the soup described by `adjacency`.
+int euler_characteristic(const SurfaceAdjacency& adjacency);
+
+}  // namespace qm

@@ -1,0 +1,41 @@
+// The flat cone metric e^(2u) g with prescribed cones (method.md section 11;
+// [Ben-Chen, Gotsman, Bunin 2008], [Sawhney & Crane 2017]), linearized: one solve
+// with the cotan Laplacian,
+//   L u = K_target - K,
+// where K is the surface's curvature per vertex (angle defect inside, geodesic
+// curvature on the boundary: cone_set.h vertex_curvature) and K_target the cones'
+// (target_curvature). L is the cotan Laplacian over the inner edges,
+// (L u)_i = sum_j w_ij (u_i - u_j), w_ij = (cot alpha + cot beta) / 2: the sum
+// of the discrete *du across the inner edges around a vertex, which is what turns
+// the cross field there (cross_field.h), so that the field turns by exactly the
+// cones' angles at every vertex, the boundary ones included (a boundary edge
+// carries no transport; with it, as in the Neumann Laplacian, the field would miss
+// the boundary by up to degrees). The right side sums to 0 by Gauss-Bonnet, so u is
+// fixed up to a constant, chosen so that the metric keeps the surface's area:
+//   sum_f area_f e^(2 u_f) = sum_f area_f   (u_f the mean over f's corners).
+// Quad size, at a uniform target h, is h e^(-u).
+#pragma once
+
+#include "libquadmesh/param/internal/surface_adjacency.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace qm {
+
+/// u per vertex. A vertex whose inner edges carry no weight (a corner in one
+/// triangle, or in two right triangles) takes the mean of its neighbours' u. Precondition: the targets satisfy Gauss-Bonnet against the
+/// surface (require_gauss_bonnet); the soup is connected. Throws qm::Error:
+/// unsupported when such a vertex is asked to turn by other than its own
+/// angle; solver if the Laplacian cannot be factored.
+Eigen::VectorXd cone_metric(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                            const std::vector<double>& target_curvature, const std::vector<double>& surface_curvature);
+
+/// The discrete *du across the inner edge a->b: w_ab (u_b - u_a), from the
+/// cotangents at the third corners of the edge's two triangles.
+inline double conformal_rotation(double cot_opposite_f, double cot_opposite_g, double u_a, double u_b) {
+  return 0.5 * (cot_opposite_f + cot_opposite_g) * (u_b - u_a);
+}
+
+}  // namespace qm

@@ -1,0 +1,50 @@
+// The boundary-aligned cross field of a cone metric (method.md section 11): the
+// frame that the seamless map sends to the axes of the plane.
+//
+// The field is parallel for the Levi-Civita connection of e^(2u) g: crossing the
+// edge a->b from the triangle f that holds a->b into its twin g, a direction keeps
+// its angle to the edge and turns further by the discrete *du,
+//   w_ab (u_b - u_a)   (w_ab the cotan weight; cone_metric.h),
+// whose sum around a vertex is (L u)_v = K_target - K: the holonomy around every
+// vertex is its cone's, a multiple of pi/2 [Crane, Desbrun, Schroeder 2010].
+// Angles are propagated along a breadth-first tree of the triangles from a
+// boundary triangle, whose frame is put along its boundary edge; across the other
+// edges the frames differ by whole quarter turns, which are the rotations of the
+// map's transitions (seamless_map.h).
+#pragma once
+
+#include "libquadmesh/param/internal/surface_adjacency.h"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <vector>
+
+namespace qm {
+
+struct CrossField {
+  /// per triangle, the frame's angle in the triangle's local frame (face_geometry.h)
+  std::vector<double> angle;
+  /// per triangle and side k (the edge from corner k to corner k + 1): the quarter
+  /// turns q such that the twin triangle's chart is i^q times this one's (plus a
+  /// translation); 0 across tree edges and boundary edges
+  std::vector<std::array<int, 3>> quarter_turns;
+  /// per triangle and side: the edge crosses the breadth-first tree
+  std::vector<std::array<char, 3>> tree_side;
+  /// per triangle and side on the boundary: 0 if the edge runs along the frame's
+  /// first axis (the map's real axis), 1 along the second; -1 for inner sides
+  std::vector<std::array<int, 3>> boundary_axis;
+  /// the largest deviation (radians) from a whole quarter turn met across a
+  /// non-tree edge or along a boundary edge: ~0 when the cones' holonomy is sound
+  double max_misalignment = 0;
+  /// the first boundary loop that the field could not align (-1: all aligned)
+  int misaligned_loop = -1;
+};
+
+/// Precondition: `u` from cone_metric on this soup; the soup is connected.
+CrossField cone_cross_field(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u);
+
+/// The angle in (-pi/4, pi/4] that differs from `angle` by whole quarter turns.
+double quarter_turn_remainder(double angle);
+
+}  // namespace qm

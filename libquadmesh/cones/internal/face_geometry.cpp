@@ -1,0 +1,34 @@
+#include "libquadmesh/cones/internal/face_geometry.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+namespace qm {
+
+CornerValues local_corners(const TriangleSoup& soup, std::size_t f) {
+  const Triangle& t = soup.triangles[f];
+  const Vec3& p0 = soup.points[static_cast<std::size_t>(t[0])];
+  const Vec3 a = soup.points[static_cast<std::size_t>(t[1])] - p0;
+  const Vec3 b = soup.points[static_cast<std::size_t>(t[2])] - p0;
+  const double la = a.norm();
+  const double x = la > 0 ? a.dot(b) / la : 0.0;
+  const double y = la > 0 ? a.cross(b).norm() / la : 0.0;
+  return {Complex(0, 0), Complex(la, 0), Complex(x, y)};
+}
+
+std::array<double, 3> corner_cotangents(const TriangleSoup& soup, std::size_t f) {
+  const Triangle& t = soup.triangles[f];
+  std::array<double, 3> cot{};
+  for (int i = 0; i < 3; ++i) {
+    const Vec3& p = soup.points[static_cast<std::size_t>(t[i])];
+    const Vec3 a = soup.points[static_cast<std::size_t>(t[(i + 1) % 3])] - p;
+    const Vec3 b = soup.points[static_cast<std::size_t>(t[(i + 2) % 3])] - p;
+    // a degenerate corner gets a large finite weight rather than an infinite one
+    cot[static_cast<std::size_t>(i)] = a.dot(b) / std::max(a.cross(b).norm(), 1e-12 * a.norm() * b.norm() + 1e-300);
+  }
+  return cot;
+}
+
+}  // namespace qm

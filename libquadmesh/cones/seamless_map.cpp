@@ -1,0 +1,253 @@
+#include "libquadmesh/cones/seamless_map.h"
+
+#include "libquadmesh/cones/internal/face_geometry.h"
+#include "libquadmesh/core/error.h"
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/Sparse>
+
+#include <cmath>
+#include <utility>
+
+namespace qm {
+
+namespace {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+using Triplets = std::vector<Eigen::Triplet<double>>;
+
+/// Weight of a constraint against the fitting energy (whose weights are cotangents).
+constexpr double penalty_weight = 1e8;
+/// Weight of the pull that fixes the map's translation before quantization does.
+constexpr double gauge_weight = 1e-3;
+/// A value this close to an integer after a solve is taken as integer.
+constexpr double integer_tolerance = 1e-6;
+
+/// A real linear constraint sum coefficient * variable = rhs.
+struct Row {
+  std::vector<std::pair<int, double>> terms;
+  double rhs = 0;
+};
+
+/// The unknowns: two per wedge (Re W, Im W), then two per cut edge (Re t, Im t).
+int real_of(int wedge) { return 2 * wedge; }
+int imag_of(int wedge) { return 2 * wedge + 1; }
+
+/// The rows of W_g(p) - i^q W_f(p) - t = 0 (two real rows).
+void add_transition(int wedge_g, int wedge_f, int q, int t_var, std::vector<Row>& rows) {
+  // i^q (x + i y): q = 0: (x, y); 1: (-y, x); 2: (-x, -y); 3: (y, -x)
+  static constexpr int from[4][2] = {{0, 1}, {1, 0}, {0, 1}, {1, 0}};
+  static constexpr double sign[4][2] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
+  for (int c = 0; c < 2; ++c) {
+    Row r;
+    r.terms.push_back({2 * wedge_g + c, 1.0});
+    r.terms.push_back({2 * wedge_f + from[q][c], -sign[q][c]});
+    r.terms.push_back({t_var + c, -1.0});
+    rows.push_back(std::move(r));
+  }
+}
+
+/// The fitting energy's matrix and right side (the cotan form of the Dirichlet
+/// energy of W - target on each triangle).
+void add_fitting_energy(const TriangleSoup& soup, const Eigen::VectorXd& u, const CrossField& field,
+                        const CutGraph& cut, double size, Triplets& H, Eigen::VectorXd& b) {
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
+    const Triangle& t = soup.triangles[f];
+    const CornerValues x = local_corners(soup, f);
+    const auto cot = corner_cotangents(soup, f);
+    const double uf = (u[t[0]] + u[t[1]] + u[t[2]]) / 3.0;
+    const Complex scale = std::polar(std::exp(uf) / size, -field.angle[f]);
+    for (int k = 0; k < 3; ++k) {
+      const auto i = static_cast<std::size_t>((k + 1) % 3), j = static_cast<std::size_t>((k + 2) % 3);
+      const double w = 0.5 * cot[static_cast<std::size_t>(k)];
+      const Complex d = scale * (x[j] - x[i]);
+      const int wi = cut.wedge[f][i], wj = cut.wedge[f][j];
+      for (int c = 0; c < 2; ++c) {
+        const int vi = 2 * wi + c, vj = 2 * wj + c;
+        const double dc = c == 0 ? d.real() : d.imag();
+        H.emplace_back(vi, vi, w);
+        H.emplace_back(vj, vj, w);
+        H.emplace_back(vi, vj, -w);
+        H.emplace_back(vj, vi, -w);
+        b[vj] += w * dc;
+        b[vi] -= w * dc;
+      }
+    }
+  }
+}
+
+/// Transitions across cut edges and boundary alignment; returns the first
+/// translation variable of every cut edge (in order of discovery).
+std::vector<int> add_seams(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const CrossField& field,
+                           const CutGraph& cut, std::vector<Row>& rows, int& variables) {
+  std::vector<int> translations;
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
+    const Triangle& t = soup.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      const auto ks = static_cast<std::size_t>(k), ke = static_cast<std::size_t>((k + 1) % 3);
+      const EdgeCorner g = adjacency.find(t[ke], t[ks]);
+      if (g.face < 0) {
+        // boundary side: Im (or Re) of W equal at both ends
+        const int c = field.boundary_axis[f][ks] == 0 ? 1 : 0;
+        Row r;
+        r.terms.push_back({2 * cut.wedge[f][ke] + c, 1.0});
+        r.terms.push_back({2 * cut.wedge[f][ks] + c, -1.0});
+        rows.push_back(std::move(r));
+        continue;
+      }
+      if (!cut.cut_side[f][ks] || static_cast<std::size_t>(g.face) < f) continue;
+      const auto gf = static_cast<std::size_t>(g.face);
+      const int t_var = variables;
+      variables += 2;
+      translations.push_back(t_var);
+      const int q = field.quarter_turns[f][ks];
+      // a = t[k] sits at g's corner g.j, b = t[k + 1] at g.i
+      add_transition(cut.wedge[gf][static_cast<std::size_t>(g.j)], cut.wedge[f][ks], q, t_var, rows);
+      add_transition(cut.wedge[gf][static_cast<std::size_t>(g.i)], cut.wedge[f][ke], q, t_var, rows);
+    }
+  }
+  return translations;
+}
+
+/// The values quantization makes integer, in the order of their phases: the
+/// cones' positions first (a cut translation ending at a cone is (1 - i^q) times
+/// the cone's position, integer once the position is, while an integer translation
+/// may leave the cone at a half-integer point), then the boundary lines, then the
+/// cut translations.
+std::vector<std::vector<int>> integer_candidates(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                                 const CrossField& field, const CutGraph& cut,
+                                                 const std::vector<int>& quads, const std::vector<int>& translations) {
+  std::vector<std::vector<int>> phases(3);
+  std::vector<char> seen(soup.points.size(), 0);
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const auto ks = static_cast<std::size_t>(k);
+      const int v = soup.triangles[f][ks];
+      const auto sv = static_cast<std::size_t>(v);
+      const int wedge = cut.wedge[f][ks];
+      if (!adjacency.boundary_vertex[sv] && quads[sv] != 4 && !seen[sv]++) {
+        phases[0].push_back(real_of(wedge));
+        phases[0].push_back(imag_of(wedge));
+      }
+      const int axis = field.boundary_axis[f][ks];
+      if (axis >= 0) phases[1].push_back(axis == 0 ? imag_of(wedge) : real_of(wedge));
+    }
+  for (int t_var : translations) {
+    phases[2].push_back(t_var);
+    phases[2].push_back(t_var + 1);
+  }
+  return phases;
+}
+
+class PenaltySolver {
+ public:
+  PenaltySolver(int variables, Triplets energy, Eigen::VectorXd rhs, std::vector<Row> rows)
+      : n_(variables), energy_(std::move(energy)), rhs_(std::move(rhs)), rows_(std::move(rows)) {}
+
+  void fix(int variable, double value) { rows_.push_back(Row{{{variable, 1.0}}, value}); }
+
+  Eigen::VectorXd solve() {
+    Triplets all = energy_;
+    Eigen::VectorXd b = rhs_;
+    for (const Row& r : rows_)
+      for (const auto& [i, ci] : r.terms) {
+        b[i] += penalty_weight * ci * r.rhs;
+        for (const auto& [j, cj] : r.terms) all.emplace_back(i, j, penalty_weight * ci * cj);
+      }
+    SparseMatrix H(n_, n_);
+    H.setFromTriplets(all.begin(), all.end());
+    Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> solver;
+    solver.compute(H);
+    if (solver.info() != Eigen::Success)
+      throw Error(ErrorCode::solver, "the seamless map's system could not be factored");
+    Eigen::VectorXd z = solver.solve(b);
+    if (solver.info() != Eigen::Success || !z.allFinite()) throw Error(ErrorCode::solver, "the seamless map's solve failed");
+    return z;
+  }
+
+  double max_residual(const Eigen::VectorXd& z) const {
+    double worst = 0;
+    for (const Row& r : rows_) {
+      double s = -r.rhs;
+      for (const auto& [i, c] : r.terms) s += c * z[i];
+      worst = std::max(worst, std::abs(s));
+    }
+    return worst;
+  }
+
+ private:
+  int n_;
+  Triplets energy_;
+  Eigen::VectorXd rhs_;
+  std::vector<Row> rows_;
+};
+
+/// Greedy rounding, phase by phase: fix every candidate already integer and the
+/// one nearest to an integer, solve, repeat. Returns the final solution.
+Eigen::VectorXd quantize(PenaltySolver& solver, const std::vector<std::vector<int>>& phases,
+                         SeamlessMapReport& report) {
+  Eigen::VectorXd z = solver.solve();
+  ++report.solves;
+  std::vector<char> fixed(static_cast<std::size_t>(z.size()), 0);
+  for (const std::vector<int>& candidates : phases)
+    while (true) {
+      int nearest = -1;
+      double nearest_distance = 1;
+      for (int v : candidates) {
+        if (fixed[static_cast<std::size_t>(v)]) continue;
+        const double d = std::abs(z[v] - std::round(z[v]));
+        if (d < integer_tolerance) {
+          fixed[static_cast<std::size_t>(v)] = 1;
+          solver.fix(v, std::round(z[v]));
+          ++report.integer_values;
+        } else if (d < nearest_distance) {
+          nearest_distance = d;
+          nearest = v;
+        }
+      }
+      if (nearest < 0) break;
+      fixed[static_cast<std::size_t>(nearest)] = 1;
+      solver.fix(nearest, std::round(z[nearest]));
+      ++report.integer_values;
+      report.max_rounding = std::max(report.max_rounding, nearest_distance);
+      z = solver.solve();
+      ++report.solves;
+    }
+  return z;
+}
+
+}  // namespace
+
+FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u,
+                     const CrossField& field, const CutGraph& cut, const std::vector<int>& quads, double size,
+                     SeamlessMapReport& report) {
+  QM_ASSERT(size > 0);
+  report = {};
+  std::vector<Row> rows;
+  int variables = 2 * cut.wedge_count;
+  const std::vector<int> translations = add_seams(soup, adjacency, field, cut, rows, variables);
+  Triplets H;
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(variables);
+  add_fitting_energy(soup, u, field, cut, size, H, b);
+  // gauge: the map is fixed up to a translation; a faint pull of wedge 0 to 0
+  // makes the system definite without competing with the integer values
+  H.emplace_back(0, 0, gauge_weight);
+  H.emplace_back(1, 1, gauge_weight);
+  PenaltySolver solver(variables, std::move(H), std::move(b), std::move(rows));
+  const Eigen::VectorXd z =
+      quantize(solver, integer_candidates(soup, adjacency, field, cut, quads, translations), report);
+  report.max_seam_residual = solver.max_residual(z);
+
+  FaceMap map;
+  map.corners.resize(soup.triangles.size());
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      const int w = cut.wedge[f][k];
+      map.corners[f][k] = Complex(z[real_of(w)], z[imag_of(w)]);
+    }
+    if (image_area2(map.corners[f]) <= 0) ++report.inverted_triangles;
+  }
+  return map;
+}
+
+}  // namespace qm

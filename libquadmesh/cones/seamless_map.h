@@ -1,0 +1,35 @@
+// The seamless map with rotational transitions (method.md section 11; cf. MIQ
+// [Bommes, Zimmer, Kobbelt 2009], QGP [Campen, Bommes, Kobbelt 2015]): the map W
+// whose gradient fits the cone metric's scaled frame,
+//   minimize  sum_f  area_f | dW - e^(u_f - i angle_f) / h |^2     (per triangle),
+// with one value per wedge (cut_graph.h) and, across every cut edge from triangle f
+// to its twin g, the transition W_g = i^q W_f + t (q from the cross field);
+// boundary edges along one axis (Im W or Re W constant on them). Quantization then
+// makes the map an integer-grid map: greedily, the value nearest to an integer is
+// fixed to it and the map solved again, until every cone sits on a lattice point,
+// every translation t is a Gaussian integer and every boundary segment lies on an
+// integer line. The constraints are kept by a stiff penalty (relative residual
+// about 1e-9), which also makes redundant ones harmless.
+#pragma once
+
+#include "libquadmesh/cones/cut_graph.h"
+#include "libquadmesh/param/face_map.h"
+
+namespace qm {
+
+struct SeamlessMapReport {
+  std::size_t integer_values = 0;   ///< values made integer by quantization
+  std::size_t solves = 0;           ///< linear solves, the first one included
+  double max_seam_residual = 0;     ///< largest constraint residual (lattice units)
+  double max_rounding = 0;          ///< largest distance a value was moved to its integer
+  std::size_t inverted_triangles = 0;  ///< image area <= 0
+};
+
+/// Per triangle corner, the value of the wedge it belongs to. `u` from
+/// cone_metric, `size` the target quad edge in the surface's units (> 0).
+/// Throws qm::Error (solver) when the system cannot be factored.
+FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u,
+                     const CrossField& field, const CutGraph& cut, const std::vector<int>& quads, double size,
+                     SeamlessMapReport& report);
+
+}  // namespace qm
