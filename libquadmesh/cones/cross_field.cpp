@@ -61,7 +61,7 @@ CrossField cone_cross_field(const TriangleSoup& soup, const SurfaceAdjacency& ad
     const double in_g = std::arg(local[gf][static_cast<std::size_t>(g.i)] - local[gf][static_cast<std::size_t>(g.j)]);
     const double turn = conformal_rotation(cot[f][static_cast<std::size_t>((k + 2) % 3)],
                                            cot[gf][static_cast<std::size_t>(3 - g.i - g.j)], u[t[k]], u[t[(k + 1) % 3]]);
-    return angle - in_f + in_g - turn;
+    return angle - in_f + in_g + turn;
   };
 
   const auto [seed, seed_side] = seed_triangle(soup, adjacency);
