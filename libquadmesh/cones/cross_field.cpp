@@ -2,9 +2,11 @@
 
 #include "libquadmesh/cones/cone_metric.h"
 #include "libquadmesh/cones/internal/face_geometry.h"
+#include "libquadmesh/cones/loop_alignment.h"
 #include "libquadmesh/core/error.h"
 
 #include <cmath>
+#include <functional>
 #include <queue>
 
 namespace qm {
@@ -38,34 +40,39 @@ double quarter_turn_remainder(double angle) {
   return angle - quarter_turn * std::round(angle / quarter_turn);
 }
 
-CrossField cone_cross_field(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u) {
+namespace {
+
+/// What the propagation needs of every triangle.
+struct LocalFrames {
+  std::vector<CornerValues> corners;
+  std::vector<std::array<double, 3>> cot;
+};
+
+/// The extra rotation (radians) crossing side k of triangle f into its twin.
+using ExtraTurn = std::function<double(std::size_t f, const EdgeCorner& g)>;
+
+/// The angle a direction at `angle` in f gets in the twin g across side k of f.
+double transported(const TriangleSoup& soup, const LocalFrames& frames, const Eigen::VectorXd& u, std::size_t f, int k,
+                   const EdgeCorner& g, double angle, const ExtraTurn& extra) {
+  const Triangle& t = soup.triangles[f];
+  const auto gf = static_cast<std::size_t>(g.face);
+  // side k is a->b in f; g holds b->a with b at corner g.i, a at corner g.j
+  const double in_f = side_angle(frames.corners[f], k);
+  const double in_g = std::arg(frames.corners[gf][static_cast<std::size_t>(g.i)] - frames.corners[gf][static_cast<std::size_t>(g.j)]);
+  const double turn = conformal_rotation(frames.cot[f][static_cast<std::size_t>((k + 2) % 3)],
+                                         frames.cot[gf][static_cast<std::size_t>(3 - g.i - g.j)], u[t[k]],
+                                         u[t[(k + 1) % 3]]);
+  return angle - in_f + in_g + turn + extra(f, g);
+}
+
+/// Angles along a breadth-first tree of the triangles from `seed` (at
+/// `seed_angle`); marks the tree's sides.
+void propagate(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const LocalFrames& frames,
+               const Eigen::VectorXd& u, int seed, double seed_angle, const ExtraTurn& extra, CrossField& field) {
   const std::size_t nF = soup.triangles.size();
-  std::vector<CornerValues> local(nF);
-  std::vector<std::array<double, 3>> cot(nF);
-  for (std::size_t f = 0; f < nF; ++f) {
-    local[f] = local_corners(soup, f);
-    cot[f] = corner_cotangents(soup, f);
-  }
-  CrossField field;
   field.angle.assign(nF, 0.0);
-  field.quarter_turns.assign(nF, {0, 0, 0});
   field.tree_side.assign(nF, {0, 0, 0});
-  field.boundary_axis.assign(nF, {-1, -1, -1});
-
-  // the angle a direction at `angle` in f gets in the twin across side k of f
-  auto transported = [&](std::size_t f, int k, const EdgeCorner& g, double angle) {
-    const Triangle& t = soup.triangles[f];
-    const auto gf = static_cast<std::size_t>(g.face);
-    // side k is a->b in f; g holds b->a with b at corner g.i, a at corner g.j
-    const double in_f = side_angle(local[f], k);
-    const double in_g = std::arg(local[gf][static_cast<std::size_t>(g.i)] - local[gf][static_cast<std::size_t>(g.j)]);
-    const double turn = conformal_rotation(cot[f][static_cast<std::size_t>((k + 2) % 3)],
-                                           cot[gf][static_cast<std::size_t>(3 - g.i - g.j)], u[t[k]], u[t[(k + 1) % 3]]);
-    return angle - in_f + in_g + turn;
-  };
-
-  const auto [seed, seed_side] = seed_triangle(soup, adjacency);
-  field.angle[static_cast<std::size_t>(seed)] = seed_side >= 0 ? side_angle(local[static_cast<std::size_t>(seed)], seed_side) : 0.0;
+  field.angle[static_cast<std::size_t>(seed)] = seed_angle;
   std::vector<char> reached(nF, 0);
   reached[static_cast<std::size_t>(seed)] = 1;
   std::queue<int> queue;
@@ -79,35 +86,87 @@ CrossField cone_cross_field(const TriangleSoup& soup, const SurfaceAdjacency& ad
       if (g.face < 0 || reached[static_cast<std::size_t>(g.face)]) continue;
       const auto gf = static_cast<std::size_t>(g.face);
       reached[gf] = 1;
-      field.angle[gf] = transported(f, k, g, field.angle[f]);
+      field.angle[gf] = transported(soup, frames, u, f, k, g, field.angle[f], extra);
       field.tree_side[f][static_cast<std::size_t>(k)] = 1;
       field.tree_side[gf][static_cast<std::size_t>(g.i)] = 1;  // g's side from b (corner g.i) to a
       queue.push(g.face);
     }
   }
+}
 
+/// Quarter turns across inner sides, axes of boundary sides, misalignments; and
+/// per boundary loop the remainder of its first side's offset from the frame.
+std::vector<double> classify_sides(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                   const LocalFrames& frames, const Eigen::VectorXd& u, const ExtraTurn& extra,
+                                   CrossField& field) {
+  const std::size_t nF = soup.triangles.size();
+  field.quarter_turns.assign(nF, {0, 0, 0});
+  field.boundary_axis.assign(nF, {-1, -1, -1});
+  field.max_misalignment = 0;
+  field.misaligned_loop = -1;
+  std::vector<double> loop_offset(adjacency.boundary_loops.size(), 0.0);
+  std::vector<char> loop_seen(adjacency.boundary_loops.size(), 0);
   for (std::size_t f = 0; f < nF; ++f) {
     const Triangle& t = soup.triangles[f];
     for (int k = 0; k < 3; ++k) {
       const EdgeCorner g = adjacency.find(t[(k + 1) % 3], t[k]);
       if (g.face < 0) {
-        const double offset = side_angle(local[f], k) - field.angle[f];
+        const double offset = side_angle(frames.corners[f], k) - field.angle[f];
         const double miss = std::abs(quarter_turn_remainder(offset));
+        const auto loop = static_cast<std::size_t>(adjacency.loop_of_vertex[static_cast<std::size_t>(t[k])]);
         field.boundary_axis[f][static_cast<std::size_t>(k)] = modulo4(whole_quarter_turns(offset)) % 2;
-        if (miss > field.max_misalignment) field.max_misalignment = miss;
-        if (miss > alignment_tolerance && field.misaligned_loop < 0)
-          field.misaligned_loop = adjacency.loop_of_vertex[static_cast<std::size_t>(t[k])];
+        if (!loop_seen[loop]++) loop_offset[loop] = quarter_turn_remainder(offset);
+        field.max_misalignment = std::max(field.max_misalignment, miss);
+        if (miss > alignment_tolerance && field.misaligned_loop < 0) field.misaligned_loop = static_cast<int>(loop);
         continue;
       }
-      const auto gf = static_cast<std::size_t>(g.face);
-      const double jump = field.angle[gf] - transported(f, k, g, field.angle[f]);
-      const double miss = std::abs(quarter_turn_remainder(jump));
-      if (miss > field.max_misalignment) field.max_misalignment = miss;
+      const double jump = field.angle[static_cast<std::size_t>(g.face)] -
+                          transported(soup, frames, u, f, k, g, field.angle[f], extra);
+      field.max_misalignment = std::max(field.max_misalignment, std::abs(quarter_turn_remainder(jump)));
       // g's frame is f's transported frame turned by jump = r quarter turns; the
       // charts W = e^(-i angle) x then differ by i^(-r)
       field.quarter_turns[f][static_cast<std::size_t>(k)] = modulo4(-whole_quarter_turns(jump));
     }
   }
+  return loop_offset;
+}
+
+}  // namespace
+
+CrossField cone_cross_field(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u) {
+  const std::size_t nF = soup.triangles.size();
+  LocalFrames frames;
+  frames.corners.resize(nF);
+  frames.cot.resize(nF);
+  for (std::size_t f = 0; f < nF; ++f) {
+    frames.corners[f] = local_corners(soup, f);
+    frames.cot[f] = corner_cotangents(soup, f);
+  }
+  const auto [seed, seed_side] = seed_triangle(soup, adjacency);
+  const double seed_angle = seed_side >= 0 ? side_angle(frames.corners[static_cast<std::size_t>(seed)], seed_side) : 0.0;
+  CrossField field;
+  const ExtraTurn none = [](std::size_t, const EdgeCorner&) { return 0.0; };
+  propagate(soup, adjacency, frames, u, seed, seed_angle, none, field);
+  const std::vector<double> offset = classify_sides(soup, adjacency, frames, u, none, field);
+  field.loop_rotation.assign(adjacency.boundary_loops.size(), 0.0);
+  if (adjacency.boundary_loops.size() <= 1) return field;
+
+  // the other loops: the trivial connection that turns each by its offset
+  const Triangle& st = soup.triangles[static_cast<std::size_t>(seed)];
+  const int reference = adjacency.loop_of_vertex[static_cast<std::size_t>(st[seed_side])];
+  const Eigen::MatrixXd phi = loop_potentials(soup, adjacency, reference);
+  Eigen::VectorXd c(phi.cols());
+  for (std::size_t l = 0, col = 0; l < offset.size(); ++l) {
+    if (static_cast<int>(l) == reference) continue;
+    field.loop_rotation[l] = offset[l];
+    c[static_cast<Eigen::Index>(col++)] = offset[l];
+  }
+  const Eigen::VectorXd potential = phi * c;
+  const ExtraTurn extra = [&](std::size_t f, const EdgeCorner& g) {
+    return potential[g.face] - potential[static_cast<Eigen::Index>(f)];
+  };
+  propagate(soup, adjacency, frames, u, seed, seed_angle, extra, field);
+  classify_sides(soup, adjacency, frames, u, extra, field);
   return field;
 }
 

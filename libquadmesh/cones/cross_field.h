@@ -10,7 +10,9 @@
 // Angles are propagated along a breadth-first tree of the triangles from a
 // boundary triangle, whose frame is put along its boundary edge; across the other
 // edges the frames differ by whole quarter turns, which are the rotations of the
-// map's transitions (seamless_map.h).
+// map's transitions (seamless_map.h). On a surface with several boundary loops the
+// field meets the other loops turned by some angle: a trivial connection
+// (loop_alignment.h) turns it back, keeping every cone.
 #pragma once
 
 #include "libquadmesh/param/internal/surface_adjacency.h"
@@ -39,6 +41,9 @@ struct CrossField {
   double max_misalignment = 0;
   /// the first boundary loop that the field could not align (-1: all aligned)
   int misaligned_loop = -1;
+  /// per boundary loop, the rotation (radians, |.| <= pi/4) that the trivial
+  /// connection of loop_alignment.h adds to align it; 0 for the reference loop
+  std::vector<double> loop_rotation;
 };
 
 /// Precondition: `u` from cone_metric on this soup; the soup is connected.
