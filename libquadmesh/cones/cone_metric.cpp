@@ -70,50 +70,75 @@ double area_preserving_shift(const TriangleSoup& soup, const Eigen::VectorXd& u)
 
 }  // namespace
 
-Eigen::VectorXd cone_metric(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
-                            const std::vector<double>& target_curvature, const std::vector<double>& surface_curvature) {
-  const std::size_t nV = soup.points.size();
-  QM_ASSERT(target_curvature.size() == nV && surface_curvature.size() == nV && nV > 0);
-  const SparseMatrix L = inner_edge_laplacian(soup, adjacency);
-  Eigen::VectorXd rhs(static_cast<Eigen::Index>(nV));
-  for (std::size_t v = 0; v < nV; ++v) rhs[static_cast<Eigen::Index>(v)] = target_curvature[v] - surface_curvature[v];
+struct ConeMetricSolver::Factor {
+  SparseMatrix L;
+  Eigen::VectorXd weight;
+  double epsilon = 0;
+  Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> cholesky;
+};
+
+ConeMetricSolver::ConeMetricSolver(const TriangleSoup& soup, const SurfaceAdjacency& adjacency)
+    : soup_(soup), adjacency_(adjacency), factor_(std::make_unique<Factor>()) {
+  factor_->L = inner_edge_laplacian(soup, adjacency);
   // L is singular (constants; and a corner whose inner edges all have weight 0):
   // a faint diagonal makes it definite without moving the solution measurably
-  const Eigen::VectorXd weight = transport_weight(L);
-  const double epsilon = regularization * std::max(weight.mean(), 1e-300);
-  SparseMatrix A = L;
-  for (Eigen::Index v = 0; v < A.rows(); ++v) A.coeffRef(v, v) += epsilon;
-  Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> solver;
-  solver.setMode(Eigen::CholmodLDLt);
-  solver.compute(A);
-  if (solver.info() != Eigen::Success)
+  factor_->weight = transport_weight(factor_->L);
+  factor_->epsilon = regularization * std::max(factor_->weight.mean(), 1e-300);
+  SparseMatrix A = factor_->L;
+  for (Eigen::Index v = 0; v < A.rows(); ++v) A.coeffRef(v, v) += factor_->epsilon;
+  factor_->cholesky.setMode(Eigen::CholmodLDLt);
+  factor_->cholesky.compute(A);
+  if (factor_->cholesky.info() != Eigen::Success)
     throw Error(ErrorCode::solver, "the cone metric's Laplacian could not be factored (degenerate triangles?)");
-  Eigen::VectorXd u = solver.solve(rhs);
-  if (solver.info() != Eigen::Success || !u.allFinite())
+}
+
+ConeMetricSolver::~ConeMetricSolver() = default;
+
+Eigen::VectorXd ConeMetricSolver::apply_inverse(const Eigen::VectorXd& x) const {
+  Eigen::VectorXd y = factor_->cholesky.solve(x);
+  if (factor_->cholesky.info() != Eigen::Success || !y.allFinite())
+    throw Error(ErrorCode::solver, "the cone metric's solve failed");
+  return y;
+}
+
+Eigen::VectorXd ConeMetricSolver::solve(const std::vector<double>& target_curvature,
+                                        const std::vector<double>& surface_curvature) const {
+  const std::size_t nV = soup_.points.size();
+  QM_ASSERT(target_curvature.size() == nV && surface_curvature.size() == nV && nV > 0);
+  Eigen::VectorXd rhs(static_cast<Eigen::Index>(nV));
+  for (std::size_t v = 0; v < nV; ++v) rhs[static_cast<Eigen::Index>(v)] = target_curvature[v] - surface_curvature[v];
+  Eigen::VectorXd u = factor_->cholesky.solve(rhs);
+  if (factor_->cholesky.info() != Eigen::Success || !u.allFinite())
     throw Error(ErrorCode::solver, "the cone metric's solve failed");
   // every vertex must turn the field as asked; one whose inner edges carry no
   // weight cannot turn it at all
-  const Eigen::VectorXd residual = L * u - rhs;
+  const Eigen::VectorXd residual = factor_->L * u - rhs;
   for (std::size_t v = 0; v < nV; ++v)
     if (std::abs(residual[static_cast<Eigen::Index>(v)]) > turning_tolerance)
-      throw Error(ErrorCode::unsupported, describe_vertex(soup, static_cast<int>(v)) + ": its triangles cannot turn by " +
+      throw Error(ErrorCode::unsupported, describe_vertex(soup_, static_cast<int>(v)) +
+                                              ": its triangles cannot turn by " +
                                               std::to_string(target_curvature[v] * 180 / M_PI) +
                                               " degrees there (split them)");
   // such a vertex takes the mean of its neighbours' scale
   for (std::size_t v = 0; v < nV; ++v) {
-    if (weight[static_cast<Eigen::Index>(v)] > epsilon || adjacency.vertex_faces[v].empty()) continue;
+    if (factor_->weight[static_cast<Eigen::Index>(v)] > factor_->epsilon || adjacency_.vertex_faces[v].empty()) continue;
     double sum = 0;
     int count = 0;
-    for (int f : adjacency.vertex_faces[v])
-      for (int c : soup.triangles[static_cast<std::size_t>(f)])
+    for (int f : adjacency_.vertex_faces[v])
+      for (int c : soup_.triangles[static_cast<std::size_t>(f)])
         if (static_cast<std::size_t>(c) != v) {
           sum += u[c];
           ++count;
         }
     u[static_cast<Eigen::Index>(v)] = sum / count;
   }
-  u.array() += area_preserving_shift(soup, u);
+  u.array() += area_preserving_shift(soup_, u);
   return u;
+}
+
+Eigen::VectorXd cone_metric(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                            const std::vector<double>& target_curvature, const std::vector<double>& surface_curvature) {
+  return ConeMetricSolver(soup, adjacency).solve(target_curvature, surface_curvature);
 }
 
 }  // namespace qm

@@ -20,9 +20,30 @@
 
 #include <Eigen/Core>
 
+#include <memory>
 #include <vector>
 
 namespace qm {
+
+/// The factored Laplacian, for many cone sets on one surface (cone placement).
+class ConeMetricSolver {
+ public:
+  /// Throws qm::Error (solver) if the Laplacian cannot be factored.
+  ConeMetricSolver(const TriangleSoup& soup, const SurfaceAdjacency& adjacency);
+  ~ConeMetricSolver();
+  ConeMetricSolver(const ConeMetricSolver&) = delete;
+  ConeMetricSolver& operator=(const ConeMetricSolver&) = delete;
+  /// u for these targets (see cone_metric below).
+  Eigen::VectorXd solve(const std::vector<double>& target_curvature, const std::vector<double>& surface_curvature) const;
+  /// (L + epsilon I)^-1 x: u up to its constant, for a right side x that sums to 0.
+  Eigen::VectorXd apply_inverse(const Eigen::VectorXd& x) const;
+
+ private:
+  struct Factor;
+  const TriangleSoup& soup_;
+  const SurfaceAdjacency& adjacency_;
+  std::unique_ptr<Factor> factor_;
+};
 
 /// u per vertex. A vertex whose inner edges carry no weight (a corner in one
 /// triangle, or in two right triangles) takes the mean of its neighbours' u. Precondition: the targets satisfy Gauss-Bonnet against the

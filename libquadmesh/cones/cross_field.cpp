@@ -68,7 +68,8 @@ double transported(const TriangleSoup& soup, const LocalFrames& frames, const Ei
 /// Angles along a breadth-first tree of the triangles from `seed` (at
 /// `seed_angle`); marks the tree's sides.
 void propagate(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const LocalFrames& frames,
-               const Eigen::VectorXd& u, int seed, double seed_angle, const ExtraTurn& extra, CrossField& field) {
+               const Eigen::VectorXd& u, int seed, double seed_angle, const ExtraTurn& extra, CrossField& field,
+               std::vector<std::pair<int, int>>* parent = nullptr) {
   const std::size_t nF = soup.triangles.size();
   field.angle.assign(nF, 0.0);
   field.tree_side.assign(nF, {0, 0, 0});
@@ -89,16 +90,18 @@ void propagate(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, cons
       field.angle[gf] = transported(soup, frames, u, f, k, g, field.angle[f], extra);
       field.tree_side[f][static_cast<std::size_t>(k)] = 1;
       field.tree_side[gf][static_cast<std::size_t>(g.i)] = 1;  // g's side from b (corner g.i) to a
+      if (parent) (*parent)[gf] = {static_cast<int>(f), k};
       queue.push(g.face);
     }
   }
 }
 
 /// Quarter turns across inner sides, axes of boundary sides, misalignments; and
-/// per boundary loop the remainder of its first side's offset from the frame.
+/// per boundary loop the remainder of its first side's offset from the frame (and,
+/// if asked, that side's triangle and the offset itself).
 std::vector<double> classify_sides(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                                    const LocalFrames& frames, const Eigen::VectorXd& u, const ExtraTurn& extra,
-                                   CrossField& field) {
+                                   CrossField& field, std::vector<std::pair<int, double>>* first_side = nullptr) {
   const std::size_t nF = soup.triangles.size();
   field.quarter_turns.assign(nF, {0, 0, 0});
   field.boundary_axis.assign(nF, {-1, -1, -1});
@@ -115,7 +118,10 @@ std::vector<double> classify_sides(const TriangleSoup& soup, const SurfaceAdjace
         const double miss = std::abs(quarter_turn_remainder(offset));
         const auto loop = static_cast<std::size_t>(adjacency.loop_of_vertex[static_cast<std::size_t>(t[k])]);
         field.boundary_axis[f][static_cast<std::size_t>(k)] = modulo4(whole_quarter_turns(offset)) % 2;
-        if (!loop_seen[loop]++) loop_offset[loop] = quarter_turn_remainder(offset);
+        if (!loop_seen[loop]++) {
+          loop_offset[loop] = quarter_turn_remainder(offset);
+          if (first_side) (*first_side)[loop] = {static_cast<int>(f), offset};
+        }
         field.max_misalignment = std::max(field.max_misalignment, miss);
         if (miss > alignment_tolerance && field.misaligned_loop < 0) field.misaligned_loop = static_cast<int>(loop);
         continue;
@@ -131,9 +137,7 @@ std::vector<double> classify_sides(const TriangleSoup& soup, const SurfaceAdjace
   return loop_offset;
 }
 
-}  // namespace
-
-CrossField cone_cross_field(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u) {
+LocalFrames local_frames(const TriangleSoup& soup) {
   const std::size_t nF = soup.triangles.size();
   LocalFrames frames;
   frames.corners.resize(nF);
@@ -142,6 +146,55 @@ CrossField cone_cross_field(const TriangleSoup& soup, const SurfaceAdjacency& ad
     frames.corners[f] = local_corners(soup, f);
     frames.cot[f] = corner_cotangents(soup, f);
   }
+  return frames;
+}
+
+}  // namespace
+
+double LoopTurns::turn(int loop, const Eigen::VectorXd& rhs) const {
+  if (loop == reference) return 0.0;
+  return quarter_turn_remainder(offset[static_cast<std::size_t>(loop)] -
+                                gradient[static_cast<std::size_t>(loop)].dot(rhs));
+}
+
+LoopTurns loop_turns(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const ConeMetricSolver& solver) {
+  const LocalFrames frames = local_frames(soup);
+  const auto [seed, seed_side] = seed_triangle(soup, adjacency);
+  QM_ASSERT(seed_side >= 0);
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(soup.points.size()));
+  const ExtraTurn none = [](std::size_t, const EdgeCorner&) { return 0.0; };
+  CrossField field;
+  std::vector<std::pair<int, int>> parent(soup.triangles.size(), {-1, -1});
+  propagate(soup, adjacency, frames, zero, seed, side_angle(frames.corners[static_cast<std::size_t>(seed)], seed_side),
+            none, field, &parent);
+  std::vector<std::pair<int, double>> first_side(adjacency.boundary_loops.size(), {-1, 0.0});
+  classify_sides(soup, adjacency, frames, zero, none, field, &first_side);
+  LoopTurns turns;
+  turns.reference = adjacency.loop_of_vertex[static_cast<std::size_t>(soup.triangles[static_cast<std::size_t>(seed)][static_cast<std::size_t>(seed_side)])];
+  turns.offset.assign(adjacency.boundary_loops.size(), 0.0);
+  turns.gradient.resize(adjacency.boundary_loops.size());
+  for (std::size_t l = 0; l < adjacency.boundary_loops.size(); ++l) {
+    if (static_cast<int>(l) == turns.reference) continue;
+    turns.offset[l] = first_side[l].second;
+    // the offset falls by the turn w_ab (u_b - u_a) of every tree edge on the way
+    Eigen::VectorXd along = Eigen::VectorXd::Zero(zero.size());
+    for (int f = first_side[l].first; parent[static_cast<std::size_t>(f)].first >= 0;) {
+      const auto [p, k] = parent[static_cast<std::size_t>(f)];
+      const Triangle& t = soup.triangles[static_cast<std::size_t>(p)];
+      const EdgeCorner g = adjacency.find(t[(k + 1) % 3], t[k]);
+      const double w = 0.5 * (frames.cot[static_cast<std::size_t>(p)][static_cast<std::size_t>((k + 2) % 3)] +
+                              frames.cot[static_cast<std::size_t>(g.face)][static_cast<std::size_t>(3 - g.i - g.j)]);
+      along[t[(k + 1) % 3]] += w;
+      along[t[k]] -= w;
+      f = p;
+    }
+    turns.gradient[l] = solver.apply_inverse(along);
+  }
+  return turns;
+}
+
+CrossField cone_cross_field(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u) {
+  const LocalFrames frames = local_frames(soup);
   const auto [seed, seed_side] = seed_triangle(soup, adjacency);
   const double seed_angle = seed_side >= 0 ? side_angle(frames.corners[static_cast<std::size_t>(seed)], seed_side) : 0.0;
   CrossField field;

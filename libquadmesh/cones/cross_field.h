@@ -46,6 +46,27 @@ struct CrossField {
   std::vector<double> loop_rotation;
 };
 
+class ConeMetricSolver;
+
+/// How the field meets each boundary loop, as a function of the cone set: the
+/// field propagated from the reference loop arrives at loop B turned by
+///   turn_B = remainder(offset_B - gradient_B . (K_target - K))
+/// (radians, remainder to (-pi/4, pi/4]), linear in the cone metric's right side
+/// because the turn across every edge is linear in u and u = L^-1 (K_target - K).
+/// Moving a cone of curvature kappa from v to w changes the inner product by
+/// kappa (gradient_B[w] - gradient_B[v]): cone placement tries thousands of moves
+/// at the price of one solve per loop.
+struct LoopTurns {
+  int reference = -1;
+  std::vector<double> offset;                 ///< per loop (0 for the reference)
+  std::vector<Eigen::VectorXd> gradient;      ///< per loop, per vertex (empty for the reference)
+  /// turn_B for the metric's right side `rhs` = K_target - K (per vertex).
+  double turn(int loop, const Eigen::VectorXd& rhs) const;
+};
+
+/// Precondition: `solver` factored on this soup; the soup is connected.
+LoopTurns loop_turns(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const ConeMetricSolver& solver);
+
 /// Precondition: `u` from cone_metric on this soup; the soup is connected.
 CrossField cone_cross_field(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u);
 

@@ -1,0 +1,227 @@
+#include "libquadmesh/cones/cone_placement.h"
+
+#include "libquadmesh/cones/cone_map.h"
+#include "libquadmesh/cones/cone_metric.h"
+#include "libquadmesh/cones/cross_field.h"
+#include "libquadmesh/core/error.h"
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <queue>
+#include <unordered_map>
+
+namespace qm {
+
+namespace {
+
+constexpr double quarter_turn = M_PI / 2;
+/// Sweeps over the cones when moving them to align the loops.
+constexpr int max_alignment_passes = 8;
+/// Sum of the loops' turns (radians) below which the cones stay where they are.
+constexpr double alignment_goal = 1e-3;
+
+/// Per vertex, a third of the area of its triangles.
+std::vector<double> vertex_areas(const TriangleSoup& soup) {
+  std::vector<double> area(soup.points.size(), 0.0);
+  for (const Triangle& t : soup.triangles) {
+    const Vec3& p = soup.points[static_cast<std::size_t>(t[0])];
+    const double a = 0.5 * (soup.points[static_cast<std::size_t>(t[1])] - p)
+                               .cross(soup.points[static_cast<std::size_t>(t[2])] - p)
+                               .norm();
+    for (int v : t) area[static_cast<std::size_t>(v)] += a / 3;
+  }
+  return area;
+}
+
+/// Per vertex, edges to the nearest boundary vertex (breadth-first).
+std::vector<int> rings_from_boundary(const TriangleSoup& soup, const SurfaceAdjacency& adjacency) {
+  std::vector<int> rings(soup.points.size(), -1);
+  std::queue<int> queue;
+  for (std::size_t v = 0; v < soup.points.size(); ++v)
+    if (adjacency.boundary_vertex[v]) {
+      rings[v] = 0;
+      queue.push(static_cast<int>(v));
+    }
+  while (!queue.empty()) {
+    const int v = queue.front();
+    queue.pop();
+    for (int f : adjacency.vertex_faces[static_cast<std::size_t>(v)])
+      for (int w : soup.triangles[static_cast<std::size_t>(f)])
+        if (rings[static_cast<std::size_t>(w)] < 0) {
+          rings[static_cast<std::size_t>(w)] = rings[static_cast<std::size_t>(v)] + 1;
+          queue.push(w);
+        }
+  }
+  return rings;
+}
+
+/// Vertices within `rings` edges of v (v included).
+std::vector<int> ring_neighbourhood(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, int v, int rings) {
+  std::vector<int> out{v};
+  std::unordered_map<int, int> depth{{v, 0}};
+  for (std::size_t next = 0; next < out.size(); ++next) {
+    const int w = out[next];
+    if (depth[w] == rings) continue;
+    for (int f : adjacency.vertex_faces[static_cast<std::size_t>(w)])
+      for (int x : soup.triangles[static_cast<std::size_t>(f)])
+        if (depth.emplace(x, depth[w] + 1).second) out.push_back(x);
+  }
+  return out;
+}
+
+/// Moves interior cones, one at a time, to where the field meets every boundary
+/// loop closest to a whole quarter turn (cross_field.h LoopTurns), within
+/// `rings` edges of where they are. Returns the largest turn left (radians).
+double align_loops_by_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                            const ConeMetricSolver& solver, const std::vector<double>& curvature,
+                            const std::vector<char>& eligible, int rings, int separation, std::vector<Cone>& cones) {
+  const LoopTurns model = loop_turns(soup, adjacency, solver);
+  const std::size_t loops = adjacency.boundary_loops.size();
+  std::vector<double> kappa = target_curvature(adjacency, quads_per_vertex(adjacency, cones));
+  Eigen::VectorXd rhs(static_cast<Eigen::Index>(kappa.size()));
+  for (std::size_t v = 0; v < kappa.size(); ++v) rhs[static_cast<Eigen::Index>(v)] = kappa[v] - curvature[v];
+  std::vector<double> dot(loops, 0.0);
+  for (std::size_t l = 0; l < loops; ++l)
+    if (static_cast<int>(l) != model.reference) dot[l] = model.gradient[l].dot(rhs);
+  auto cost = [&](const std::vector<double>& d) {
+    double c = 0;
+    for (std::size_t l = 0; l < loops; ++l)
+      if (static_cast<int>(l) != model.reference) c += std::abs(quarter_turn_remainder(model.offset[l] - d[l]));
+    return c;
+  };
+  // vertices within `separation` edges of a cone other than the one moving
+  auto crowded = [&](const Cone& moving) {
+    std::vector<char> near(kappa.size(), 0);
+    for (const Cone& c : cones)
+      if (&c != &moving && !adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)])
+        for (int w : ring_neighbourhood(soup, adjacency, c.vertex, separation)) near[static_cast<std::size_t>(w)] = 1;
+    return near;
+  };
+  double current = cost(dot);
+  for (int pass = 0; pass < max_alignment_passes && current > alignment_goal; ++pass) {
+    bool moved = false;
+    for (Cone& cone : cones) {
+      if (adjacency.boundary_vertex[static_cast<std::size_t>(cone.vertex)]) continue;
+      const double k = (4 - cone.quads) * quarter_turn;
+      int best = -1;
+      std::vector<double> best_dot;
+      const std::vector<char> near = crowded(cone);
+      for (int w : ring_neighbourhood(soup, adjacency, cone.vertex, rings)) {
+        const auto sw = static_cast<std::size_t>(w);
+        if (near[sw] || !eligible[sw]) continue;
+        std::vector<double> trial = dot;
+        for (std::size_t l = 0; l < loops; ++l)
+          if (static_cast<int>(l) != model.reference)
+            trial[l] += k * (model.gradient[l][w] - model.gradient[l][cone.vertex]);
+        const double c = cost(trial);
+        if (c < current - 1e-9) {
+          current = c;
+          best = w;
+          best_dot = trial;
+        }
+      }
+      if (best < 0) continue;
+      cone.vertex = best;
+      dot = best_dot;
+      moved = true;
+    }
+    if (!moved) break;
+  }
+  double worst = 0;
+  for (std::size_t l = 0; l < loops; ++l)
+    if (static_cast<int>(l) != model.reference)
+      worst = std::max(worst, std::abs(quarter_turn_remainder(model.offset[l] - dot[l])));
+  return worst;
+}
+
+/// The cones' curvature, and `deficit` quarter turns more spread over the
+/// interior by area.
+std::vector<double> spread_targets(const SurfaceAdjacency& adjacency, const std::vector<int>& quads,
+                                   const std::vector<double>& area, double interior_area, int deficit) {
+  std::vector<double> target = target_curvature(adjacency, quads);
+  for (std::size_t v = 0; v < target.size(); ++v)
+    if (!adjacency.boundary_vertex[v]) target[v] += deficit * quarter_turn * area[v] / interior_area;
+  return target;
+}
+
+}  // namespace
+
+std::vector<Cone> corner_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                               const ConePlacementOptions& options) {
+  const std::vector<double> curvature = vertex_curvature(soup, adjacency);
+  std::vector<Cone> cones;
+  for (std::size_t v = 0; v < soup.points.size(); ++v) {
+    if (!adjacency.boundary_vertex[v]) continue;
+    const double angle = M_PI - curvature[v];
+    if (std::abs(angle - M_PI) <= options.corner_angle_deg * M_PI / 180) continue;
+    const int q = std::max(1, static_cast<int>(std::lround(angle / quarter_turn)));
+    if (q != 2) cones.push_back({static_cast<int>(v), q});
+  }
+  return cones;
+}
+
+std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                              const ConePlacementOptions& options) {
+  std::vector<Cone> cones = corner_cones(soup, adjacency, options);
+  int deficit = 4 * euler_characteristic(adjacency);
+  for (const Cone& c : cones) deficit -= 2 - c.quads;
+  if (deficit == 0) return cones;
+
+  const std::vector<double> curvature = vertex_curvature(soup, adjacency);
+  const std::vector<double> area = vertex_areas(soup);
+  const std::vector<int> rings = rings_from_boundary(soup, adjacency);
+  std::vector<char> eligible(rings.size(), 0);
+  for (std::size_t v = 0; v < rings.size(); ++v) eligible[v] = rings[v] > options.boundary_rings;
+  const ConeMetricSolver solver(soup, adjacency);
+  double interior_area = 0;
+  for (std::size_t v = 0; v < area.size(); ++v)
+    if (!adjacency.boundary_vertex[v]) interior_area += area[v];
+  const int step = deficit > 0 ? 1 : -1;  // valence 3 (+1 quarter turn) or 5 (-1)
+  std::vector<char> taken(soup.points.size(), 0);
+  const bool several_loops = adjacency.boundary_loops.size() > 1;
+  const LoopTurns model = several_loops ? loop_turns(soup, adjacency, solver) : LoopTurns{};
+  while (deficit != 0) {
+    // the cones so far, the rest spread over the interior by area
+    const std::vector<int> quads = quads_per_vertex(adjacency, cones);
+    const Eigen::VectorXd u = solver.solve(spread_targets(adjacency, quads, area, interior_area, deficit), curvature);
+    int extreme = -1;
+    for (std::size_t v = 0; v < soup.points.size(); ++v)
+      if (eligible[v] && !taken[v] && (extreme < 0 || step * u[static_cast<Eigen::Index>(v)] < step * u[extreme]))
+        extreme = static_cast<int>(v);
+    if (extreme < 0)
+      throw Error(ErrorCode::unsupported, "no inner vertex is " + std::to_string(options.boundary_rings + 1) +
+                                              " edges from the boundary to take a cone (refine the mesh)");
+    int best = extreme;
+    if (several_loops) {
+      // among the vertices nearly as extreme, the one after which the field meets
+      // the loops closest to whole quarter turns (the rest of D still spread)
+      const std::vector<double> next = spread_targets(adjacency, quads, area, interior_area, deficit - step);
+      Eigen::VectorXd rhs(u.size());
+      for (Eigen::Index v = 0; v < rhs.size(); ++v) rhs[v] = next[static_cast<std::size_t>(v)] - curvature[static_cast<std::size_t>(v)];
+      double best_cost = -1;
+      for (std::size_t v = 0; v < soup.points.size(); ++v) {
+        const auto vi = static_cast<Eigen::Index>(v);
+        if (!eligible[v] || taken[v] || step * (u[vi] - u[extreme]) > options.extreme_tolerance) continue;
+        double cost = 0;
+        for (std::size_t l = 0; l < adjacency.boundary_loops.size(); ++l)
+          if (static_cast<int>(l) != model.reference)
+            cost += std::abs(quarter_turn_remainder(model.offset[l] - model.gradient[l].dot(rhs) -
+                                                    step * quarter_turn * model.gradient[l][vi]));
+        if (best_cost < 0 || cost < best_cost) {
+          best_cost = cost;
+          best = static_cast<int>(v);
+        }
+      }
+    }
+    cones.push_back({best, 4 - step});
+    taken[static_cast<std::size_t>(best)] = 1;
+    deficit -= step;
+  }
+  if (several_loops)
+    align_loops_by_cones(soup, adjacency, solver, curvature, eligible, options.alignment_rings,
+                         options.cone_separation, cones);
+  return cones;
+}
+
+}  // namespace qm

@@ -1,0 +1,51 @@
+// Where the cones go (method.md section 11, "auto"): a quad at every CAD corner
+// as its angle asks, and the interior cones that Gauss-Bonnet then demands,
+// placed greedily on the conformal factor [Ben-Chen, Gotsman, Bunin 2008].
+//
+// Corners: a boundary vertex whose angle alpha (the sum of its triangles' angles)
+// is away from pi gets q = max(1, round(alpha / (pi/2))) quads.
+// Interior: the corners leave D = 4 chi - sum (2 - q) quarter turns to the inside
+// (a plate with two holes and four right corners: D = -8, eight valence-5 cones).
+// They are placed one at a time: with the cones placed so far concentrated and the
+// rest of D spread over the interior by area, the cone metric is solved, and the
+// next valence-5 cone goes where u is highest (the quads smallest), a valence-3
+// cone where it is lowest; a cone there pulls u towards the middle of the band.
+// With several boundary loops the cones are then moved, one at a time and a few
+// edges at most, until the field meets every loop at a whole quarter turn ("fix
+// it by the choice of cones"); what is left the trivial connection of
+// loop_alignment.h takes.
+#pragma once
+
+#include "libquadmesh/cones/cone_set.h"
+
+#include <Eigen/Core>
+
+namespace qm {
+
+struct ConePlacementOptions {
+  /// A boundary vertex counts as a corner when its angle differs from pi by more
+  /// than this (degrees): 45 puts the change of quad count half-way between.
+  double corner_angle_deg = 45.0;
+  /// Interior cones keep this many edges (rings) from the boundary.
+  int boundary_rings = 2;
+  /// With several boundary loops, each cone goes, among the vertices whose u is
+  /// within this of the extreme, where the field meets the loops best.
+  double extreme_tolerance = 0.15;
+  /// Then a cone may move this far (edges) so that the field meets every loop at
+  /// a whole quarter turn (cross_field.h LoopTurns)...
+  int alignment_rings = 4;
+  /// ...keeping this many edges from the other interior cones.
+  int cone_separation = 6;
+};
+
+/// The corner cones: boundary vertices whose angle is away from pi.
+std::vector<Cone> corner_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                               const ConePlacementOptions& options = {});
+
+/// The corner cones and the interior cones that Gauss-Bonnet demands after them.
+/// Throws qm::Error (unsupported) when no interior vertex is far enough from the
+/// boundary to take a cone.
+std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                              const ConePlacementOptions& options = {});
+
+}  // namespace qm
