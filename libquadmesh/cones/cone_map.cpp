@@ -18,6 +18,18 @@ int euler_characteristic(const SurfaceAdjacency& adjacency) {
   return static_cast<int>(vertices) - static_cast<int>(edges) + static_cast<int>(soup.triangles.size());
 }
 
+namespace {
+
+/// The mean of u over the neighbours of v.
+double ring_mean(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u, std::size_t v) {
+  const VertexRing ring = vertex_ring(soup, adjacency, static_cast<int>(v));
+  double sum = 0;
+  for (int w : ring.neighbours) sum += u[w];
+  return ring.neighbours.empty() ? u[static_cast<Eigen::Index>(v)] : sum / static_cast<double>(ring.neighbours.size());
+}
+
+}  // namespace
+
 ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const std::vector<Cone>& cones,
                  double size) {
   QM_ASSERT(size > 0 && adjacency.soup == &soup);
@@ -32,7 +44,15 @@ ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, co
                     std::to_string(out.field.max_misalignment * 180 / M_PI) +
                     " degrees against the cones' cross field: these cones give no quad mesh");
   out.cut = cut_graph(soup, adjacency, out.field, out.quads);
-  out.map = seamless_map(soup, adjacency, out.u, out.field, out.cut, out.quads, size, out.report);
+  // u has a logarithmic singularity at an interior cone; its value there is the
+  // discretization's, not the metric's, and would shrink (valence 5) or swell
+  // (valence 3) the cone's star in the fit: there the fit takes the neighbours'
+  // scale (the field keeps u as it is: its turning needs it)
+  Eigen::VectorXd scale = out.u;
+  for (std::size_t v = 0; v < out.quads.size(); ++v)
+    if (!adjacency.boundary_vertex[v] && out.quads[v] != 4)
+      scale[static_cast<Eigen::Index>(v)] = ring_mean(soup, adjacency, out.u, v);
+  out.map = seamless_map(soup, adjacency, scale, out.field, out.cut, out.quads, size, out.report);
   return out;
 }
 

@@ -8,6 +8,8 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <queue>
 #include <unordered_map>
 
@@ -34,26 +36,30 @@ std::vector<double> vertex_areas(const TriangleSoup& soup) {
   return area;
 }
 
-/// Per vertex, edges to the nearest boundary vertex (breadth-first).
-std::vector<int> rings_from_boundary(const TriangleSoup& soup, const SurfaceAdjacency& adjacency) {
-  std::vector<int> rings(soup.points.size(), -1);
-  std::queue<int> queue;
+/// Per vertex, the length of the shortest edge path to the boundary (Dijkstra).
+std::vector<double> distance_to_boundary(const TriangleSoup& soup, const SurfaceAdjacency& adjacency) {
+  std::vector<double> distance(soup.points.size(), std::numeric_limits<double>::infinity());
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
   for (std::size_t v = 0; v < soup.points.size(); ++v)
     if (adjacency.boundary_vertex[v]) {
-      rings[v] = 0;
-      queue.push(static_cast<int>(v));
+      distance[v] = 0;
+      queue.push({0.0, static_cast<int>(v)});
     }
   while (!queue.empty()) {
-    const int v = queue.front();
+    const auto [d, v] = queue.top();
     queue.pop();
+    if (d > distance[static_cast<std::size_t>(v)]) continue;
     for (int f : adjacency.vertex_faces[static_cast<std::size_t>(v)])
-      for (int w : soup.triangles[static_cast<std::size_t>(f)])
-        if (rings[static_cast<std::size_t>(w)] < 0) {
-          rings[static_cast<std::size_t>(w)] = rings[static_cast<std::size_t>(v)] + 1;
-          queue.push(w);
+      for (int w : soup.triangles[static_cast<std::size_t>(f)]) {
+        const double dw = d + (soup.points[static_cast<std::size_t>(w)] - soup.points[static_cast<std::size_t>(v)]).norm();
+        if (dw < distance[static_cast<std::size_t>(w)]) {
+          distance[static_cast<std::size_t>(w)] = dw;
+          queue.push({dw, w});
         }
+      }
   }
-  return rings;
+  return distance;
 }
 
 /// Vertices within `rings` edges of v (v included).
@@ -161,8 +167,9 @@ std::vector<Cone> corner_cones(const TriangleSoup& soup, const SurfaceAdjacency&
   return cones;
 }
 
-std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, double size,
                               const ConePlacementOptions& options) {
+  QM_ASSERT(size > 0);
   std::vector<Cone> cones = corner_cones(soup, adjacency, options);
   int deficit = 4 * euler_characteristic(adjacency);
   for (const Cone& c : cones) deficit -= 2 - c.quads;
@@ -170,9 +177,9 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
 
   const std::vector<double> curvature = vertex_curvature(soup, adjacency);
   const std::vector<double> area = vertex_areas(soup);
-  const std::vector<int> rings = rings_from_boundary(soup, adjacency);
-  std::vector<char> eligible(rings.size(), 0);
-  for (std::size_t v = 0; v < rings.size(); ++v) eligible[v] = rings[v] > options.boundary_rings;
+  const std::vector<double> distance = distance_to_boundary(soup, adjacency);
+  std::vector<char> eligible(distance.size(), 0);
+  for (std::size_t v = 0; v < distance.size(); ++v) eligible[v] = distance[v] >= options.boundary_distance * size;
   const ConeMetricSolver solver(soup, adjacency);
   double interior_area = 0;
   for (std::size_t v = 0; v < area.size(); ++v)
@@ -190,8 +197,8 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
       if (eligible[v] && !taken[v] && (extreme < 0 || step * u[static_cast<Eigen::Index>(v)] < step * u[extreme]))
         extreme = static_cast<int>(v);
     if (extreme < 0)
-      throw Error(ErrorCode::unsupported, "no inner vertex is " + std::to_string(options.boundary_rings + 1) +
-                                              " edges from the boundary to take a cone (refine the mesh)");
+      throw Error(ErrorCode::unsupported, "no inner vertex is " + std::to_string(options.boundary_distance) +
+                                              " quads from the boundary to take a cone");
     int best = extreme;
     if (several_loops) {
       // among the vertices nearly as extreme, the one after which the field meets

@@ -26,8 +26,9 @@ struct ConePlacementOptions {
   /// A boundary vertex counts as a corner when its angle differs from pi by more
   /// than this (degrees): 45 puts the change of quad count half-way between.
   double corner_angle_deg = 45.0;
-  /// Interior cones keep this many edges (rings) from the boundary.
-  int boundary_rings = 2;
+  /// Interior cones keep this far from the boundary (in quads of the target size):
+  /// nearer, the cone and the boundary line compete for the same lattice row.
+  double boundary_distance = 2.0;
   /// With several boundary loops, each cone goes, among the vertices whose u is
   /// within this of the extreme, where the field meets the loops best.
   double extreme_tolerance = 0.15;
@@ -42,10 +43,10 @@ struct ConePlacementOptions {
 std::vector<Cone> corner_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                                const ConePlacementOptions& options = {});
 
-/// The corner cones and the interior cones that Gauss-Bonnet demands after them.
-/// Throws qm::Error (unsupported) when no interior vertex is far enough from the
-/// boundary to take a cone.
-std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+/// The corner cones and the interior cones that Gauss-Bonnet demands after them,
+/// for quads of edge `size` (> 0). Throws qm::Error (unsupported) when no interior
+/// vertex is far enough from the boundary to take a cone.
+std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, double size,
                               const ConePlacementOptions& options = {});
 
 }  // namespace qm

@@ -6,6 +6,7 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/Sparse>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -20,6 +21,12 @@ using Triplets = std::vector<Eigen::Triplet<double>>;
 constexpr double penalty_weight = 1e8;
 /// Weight of the pull that fixes the map's translation before quantization does.
 constexpr double gauge_weight = 1e-3;
+/// Rounds of stiffening after quantization, and the factor a folded triangle's
+/// weight takes each round.
+constexpr int max_stiffening_rounds = 12;
+constexpr double stiffening_factor = 2.0;
+/// The stiffness no triangle exceeds (the constraints' penalty stays far above).
+constexpr double max_stiffness = 1e3;
 /// A value this close to an integer after a solve is taken as integer.
 constexpr double integer_tolerance = 1e-6;
 
@@ -50,7 +57,8 @@ void add_transition(int wedge_g, int wedge_f, int q, int t_var, std::vector<Row>
 /// The fitting energy's matrix and right side (the cotan form of the Dirichlet
 /// energy of W - target on each triangle).
 void add_fitting_energy(const TriangleSoup& soup, const Eigen::VectorXd& u, const CrossField& field,
-                        const CutGraph& cut, double size, Triplets& H, Eigen::VectorXd& b) {
+                        const CutGraph& cut, double size, const std::vector<double>& stiffness, Triplets& H,
+                        Eigen::VectorXd& b) {
   for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
     const Triangle& t = soup.triangles[f];
     const CornerValues x = local_corners(soup, f);
@@ -59,7 +67,7 @@ void add_fitting_energy(const TriangleSoup& soup, const Eigen::VectorXd& u, cons
     const Complex scale = std::polar(std::exp(uf) / size, -field.angle[f]);
     for (int k = 0; k < 3; ++k) {
       const auto i = static_cast<std::size_t>((k + 1) % 3), j = static_cast<std::size_t>((k + 2) % 3);
-      const double w = 0.5 * cot[static_cast<std::size_t>(k)];
+      const double w = 0.5 * stiffness[f] * cot[static_cast<std::size_t>(k)];
       const Complex d = scale * (x[j] - x[i]);
       const int wi = cut.wedge[f][i], wj = cut.wedge[f][j];
       for (int c = 0; c < 2; ++c) {
@@ -130,7 +138,12 @@ std::vector<std::vector<int>> integer_candidates(const TriangleSoup& soup, const
         phases[0].push_back(imag_of(wedge));
       }
       const int axis = field.boundary_axis[f][ks];
-      if (axis >= 0) phases[1].push_back(axis == 0 ? imag_of(wedge) : real_of(wedge));
+      if (axis >= 0) {
+        // both ends: a cut that ends at a boundary vertex parts its two sides' wedges
+        const int end = cut.wedge[f][static_cast<std::size_t>((k + 1) % 3)];
+        phases[1].push_back(axis == 0 ? imag_of(wedge) : real_of(wedge));
+        phases[1].push_back(axis == 0 ? imag_of(end) : real_of(end));
+      }
     }
   for (int t_var : translations) {
     phases[2].push_back(t_var);
@@ -145,6 +158,10 @@ class PenaltySolver {
       : n_(variables), energy_(std::move(energy)), rhs_(std::move(rhs)), rows_(std::move(rows)) {}
 
   void fix(int variable, double value) { rows_.push_back(Row{{{variable, 1.0}}, value}); }
+  void set_energy(Triplets energy, Eigen::VectorXd rhs) {
+    energy_ = std::move(energy);
+    rhs_ = std::move(rhs);
+  }
 
   Eigen::VectorXd solve() {
     Triplets all = energy_;
@@ -183,9 +200,10 @@ class PenaltySolver {
 };
 
 /// Greedy rounding, phase by phase: fix every candidate already integer and the
-/// one nearest to an integer, solve, repeat. Returns the final solution.
+/// one nearest to an integer, solve, repeat. Returns the final solution; `fixed`
+/// gets the values made integer.
 Eigen::VectorXd quantize(PenaltySolver& solver, const std::vector<std::vector<int>>& phases,
-                         SeamlessMapReport& report) {
+                         std::vector<std::pair<int, double>>& integers, SeamlessMapReport& report) {
   Eigen::VectorXd z = solver.solve();
   ++report.solves;
   std::vector<char> fixed(static_cast<std::size_t>(z.size()), 0);
@@ -199,6 +217,7 @@ Eigen::VectorXd quantize(PenaltySolver& solver, const std::vector<std::vector<in
         if (d < integer_tolerance) {
           fixed[static_cast<std::size_t>(v)] = 1;
           solver.fix(v, std::round(z[v]));
+          integers.push_back({v, std::round(z[v])});
           ++report.integer_values;
         } else if (d < nearest_distance) {
           nearest_distance = d;
@@ -208,12 +227,37 @@ Eigen::VectorXd quantize(PenaltySolver& solver, const std::vector<std::vector<in
       if (nearest < 0) break;
       fixed[static_cast<std::size_t>(nearest)] = 1;
       solver.fix(nearest, std::round(z[nearest]));
+      integers.push_back({nearest, std::round(z[nearest])});
       ++report.integer_values;
       report.max_rounding = std::max(report.max_rounding, nearest_distance);
       z = solver.solve();
       ++report.solves;
     }
   return z;
+}
+
+/// Per triangle: its image (wedge values of its corners) is not positive.
+std::vector<char> folded_triangles(const CutGraph& cut, const Eigen::VectorXd& z) {
+  std::vector<char> folded(cut.wedge.size(), 0);
+  for (std::size_t f = 0; f < cut.wedge.size(); ++f) {
+    CornerValues c;
+    for (std::size_t k = 0; k < 3; ++k) c[k] = Complex(z[real_of(cut.wedge[f][k])], z[imag_of(cut.wedge[f][k])]);
+    folded[f] = image_area2(c) <= 0;
+  }
+  return folded;
+}
+
+/// Multiplies the stiffness of folded triangles and of the triangles at their
+/// corners.
+void stiffen(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const std::vector<char>& folded,
+             std::vector<double>& stiffness) {
+  std::vector<char> near(folded.size(), 0);
+  for (std::size_t f = 0; f < folded.size(); ++f)
+    if (folded[f])
+      for (int v : soup.triangles[f])
+        for (int g : adjacency.vertex_faces[static_cast<std::size_t>(v)]) near[static_cast<std::size_t>(g)] = 1;
+  for (std::size_t f = 0; f < folded.size(); ++f)
+    if (folded[f] || near[f]) stiffness[f] = std::min(max_stiffness, stiffness[f] * stiffening_factor);
 }
 
 }  // namespace
@@ -226,16 +270,39 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   std::vector<Row> rows;
   int variables = 2 * cut.wedge_count;
   const std::vector<int> translations = add_seams(soup, adjacency, field, cut, rows, variables);
+  std::vector<double> stiffness(soup.triangles.size(), 1.0);
+  auto energy = [&](Triplets& H, Eigen::VectorXd& b) {
+    H.clear();
+    b = Eigen::VectorXd::Zero(variables);
+    add_fitting_energy(soup, u, field, cut, size, stiffness, H, b);
+    // gauge: the map is fixed up to a translation; a faint pull of wedge 0 to 0
+    // makes the system definite without competing with the integer values
+    H.emplace_back(0, 0, gauge_weight);
+    H.emplace_back(1, 1, gauge_weight);
+  };
   Triplets H;
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(variables);
-  add_fitting_energy(soup, u, field, cut, size, H, b);
-  // gauge: the map is fixed up to a translation; a faint pull of wedge 0 to 0
-  // makes the system definite without competing with the integer values
-  H.emplace_back(0, 0, gauge_weight);
-  H.emplace_back(1, 1, gauge_weight);
+  Eigen::VectorXd b;
+  energy(H, b);
   PenaltySolver solver(variables, std::move(H), std::move(b), std::move(rows));
-  const Eigen::VectorXd z =
-      quantize(solver, integer_candidates(soup, adjacency, field, cut, quads, translations), report);
+  std::vector<std::pair<int, double>> integers;
+  Eigen::VectorXd z =
+      quantize(solver, integer_candidates(soup, adjacency, field, cut, quads, translations), integers, report);
+  // stiffening [Bommes et al. 2009]: triangles left folded, and those around
+  // them, weigh more in the fit, until none is folded
+  for (int round = 0; round < max_stiffening_rounds; ++round) {
+    const std::vector<char> folded = folded_triangles(cut, z);
+    if (std::find(folded.begin(), folded.end(), 1) == folded.end()) break;
+    stiffen(soup, adjacency, folded, stiffness);
+    energy(H, b);
+    solver.set_energy(std::move(H), std::move(b));
+    z = solver.solve();
+    ++report.solves;
+    ++report.stiffening_rounds;
+  }
+  // the penalty leaves the integer values ~1e-9 off, the size of the extraction's
+  // fixed-point unit (2^-30): they are set exactly, so that cones and boundary
+  // lines are lattice points and lines in every chart
+  for (const auto& [v, value] : integers) z[v] = value;
   report.max_seam_residual = solver.max_residual(z);
 
   FaceMap map;

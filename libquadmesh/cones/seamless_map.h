@@ -9,7 +9,9 @@
 // fixed to it and the map solved again, until every cone sits on a lattice point,
 // every translation t is a Gaussian integer and every boundary segment lies on an
 // integer line. The constraints are kept by a stiff penalty (relative residual
-// about 1e-9), which also makes redundant ones harmless.
+// about 1e-9), which also makes redundant ones harmless. Triangles the quantized
+// map folds are then stiffened (their weight, and their neighbours', raised) and
+// the map solved again, until none is folded [Bommes, Zimmer, Kobbelt 2009].
 #pragma once
 
 #include "libquadmesh/cones/cut_graph.h"
@@ -23,6 +25,7 @@ struct SeamlessMapReport {
   double max_seam_residual = 0;     ///< largest constraint residual (lattice units)
   double max_rounding = 0;          ///< largest distance a value was moved to its integer
   std::size_t inverted_triangles = 0;  ///< image area <= 0
+  int stiffening_rounds = 0;        ///< re-solves with folded triangles weighing more
 };
 
 /// Per triangle corner, the value of the wedge it belongs to. `u` from

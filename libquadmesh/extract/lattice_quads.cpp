@@ -214,8 +214,10 @@ int quarter_turns(Complex from, Complex to) {
 /// a cone the turns around v add up to its holonomy, not 0; the walk starts at the
 /// ring's first face and does not cross the edge between its last and first faces.
 /// Returns (face, turn) pairs; a face off the ring (a non-manifold vertex) has turn 0.
+/// `holonomy` gets the turns around an inner v (0 unless v is a cone; 0 on the
+/// boundary).
 std::vector<std::pair<int, int>> chart_turns_around(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
-                                                    const FaceMap& param, int v, int reference) {
+                                                    const FaceMap& param, int v, int reference, int& holonomy) {
   const VertexRing ring = vertex_ring(soup, adjacency, v);
   const auto image = [&](int f, int w) {
     const Triangle& t = soup.triangles[static_cast<std::size_t>(f)];
@@ -231,6 +233,10 @@ std::vector<std::pair<int, int>> chart_turns_around(const TriangleSoup& soup, co
     }
     turns.push_back({ring.faces[k], turn});
   }
+  holonomy = 0;
+  if (!ring.boundary && !ring.faces.empty())
+    holonomy = quarter(turn + quarter_turns(image(ring.faces.back(), ring.neighbours.front()),
+                                            image(ring.faces.front(), ring.neighbours.front())));
   int reference_turn = 0;
   for (const auto& [f, r] : turns)
     if (f == reference) reference_turn = r;
@@ -258,8 +264,20 @@ Charts fixed_point_charts(const TriangleSoup& soup, const SurfaceAdjacency& adja
     const int vi = static_cast<int>(v);
     const Complex reference_value = param.corners[static_cast<std::size_t>(reference_face)][static_cast<std::size_t>(
         corner_of(soup.triangles[static_cast<std::size_t>(reference_face)], vi))];
-    const P2 reference{std::llround(reference_value.real() * S), std::llround(reference_value.imag() * S)};
-    for (const auto& [f, r] : chart_turns_around(soup, adjacency, param, vi, reference_face)) {
+    int holonomy = 0;
+    const auto turns = chart_turns_around(soup, adjacency, param, vi, reference_face, holonomy);
+    // a cone is the fixed point of its charts' turns: only a lattice point is
+    // turned onto itself exactly, so its reference is that lattice point; so is
+    // that of any vertex on a lattice point whose charts turn (a lattice point a
+    // rounding off would land on different sides of it in different charts)
+    const Complex snapped(std::round(reference_value.real()), std::round(reference_value.imag()));
+    const bool on_lattice = std::abs(reference_value - snapped) <= seam_tolerance;
+    const bool turning = holonomy != 0 || std::any_of(turns.begin(), turns.end(),
+                                                      [](const std::pair<int, int>& fr) { return fr.second != 0; });
+    const P2 reference = turning && on_lattice
+                             ? P2{static_cast<I64>(snapped.real()) * lattice_scale, static_cast<I64>(snapped.imag()) * lattice_scale}
+                             : P2{std::llround(reference_value.real() * S), std::llround(reference_value.imag() * S)};
+    for (const auto& [f, r] : turns) {
       const auto i = static_cast<std::size_t>(corner_of(soup.triangles[static_cast<std::size_t>(f)], vi));
       const Complex diff = param.corners[static_cast<std::size_t>(f)][i] - turned(reference_value, r);
       const double dx = std::round(diff.real()), dy = std::round(diff.imag());

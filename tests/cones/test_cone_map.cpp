@@ -3,12 +3,17 @@
 // cones the map is the scaled square itself; a valence-3/5 pair inside turns the
 // charts by quarter turns across the cut between them.
 #include "libquadmesh/cones/cone_map.h"
+#include "libquadmesh/cones/cone_placement.h"
+#include "libquadmesh/extract/lattice_quads.h"
+#include "io/read_surface.h"
 #include "libquadmesh/core/error.h"
 #include "tests/support/test_meshes.h"
 
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <map>
+#include <set>
 
 using namespace qm;
 
@@ -79,6 +84,59 @@ void check_cones(const TriangleSoup& soup, const FaceMap& map, const std::vector
   }
 }
 
+/// The quads the map's lattice cells make, with nothing dropped.
+LatticeQuads complete_quads(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const FaceMap& map) {
+  ExtractionReport report;
+  LatticeQuads q = extract_lattice_quads(soup, adjacency, map, report);
+  CHECK(report.incomplete_cells == 0);
+  CHECK(report.degenerate_cells == 0);
+  CHECK(report.bad_triangles == 0);
+  CHECK(report.seam_mismatches == 0);
+  return q;
+}
+
+/// Quads at each quad-mesh point.
+std::vector<int> quads_at_points(const LatticeQuads& q) {
+  std::vector<int> count(q.points.size(), 0);
+  for (const auto& quad : q.quads)
+    for (int v : quad) ++count[static_cast<std::size_t>(v)];
+  return count;
+}
+
+/// The quad-mesh point on surface vertex v (-1 if none).
+int point_on_vertex(const LatticeQuads& q, int v) {
+  for (std::size_t p = 0; p < q.locations.size(); ++p)
+    if (q.locations[p].kind == SurfaceLocation::Kind::vertex && q.locations[p].a == v) return static_cast<int>(p);
+  return -1;
+}
+
+/// V - E + F of the quads, and the number of points in other than 4 quads that are
+/// not on the boundary (an edge of one quad only).
+std::pair<int, int> euler_and_singular(const LatticeQuads& q) {
+  std::map<std::pair<int, int>, int> edges;
+  for (const auto& quad : q.quads)
+    for (std::size_t k = 0; k < 4; ++k) ++edges[std::minmax(quad[k], quad[(k + 1) % 4])];
+  std::set<int> boundary;
+  for (const auto& [e, n] : edges)
+    if (n == 1) boundary.insert({e.first, e.second});
+  const std::vector<int> at = quads_at_points(q);
+  int singular = 0;
+  for (std::size_t p = 0; p < at.size(); ++p) singular += !boundary.count(static_cast<int>(p)) && at[p] != 4;
+  return {static_cast<int>(q.points.size()) - static_cast<int>(edges.size()) + static_cast<int>(q.quads.size()),
+          singular};
+}
+
+/// Every cone is a quad-mesh point in as many quads as it asks.
+void check_cone_quads(const LatticeQuads& q, const std::vector<Cone>& cones) {
+  const std::vector<int> at = quads_at_points(q);
+  for (const Cone& c : cones) {
+    CAPTURE(c.vertex);
+    const int p = point_on_vertex(q, c.vertex);
+    REQUIRE(p >= 0);
+    CHECK(at[static_cast<std::size_t>(p)] == c.quads);
+  }
+}
+
 std::vector<Cone> square_corners(const TriangleSoup& soup, double side) {
   return {{vertex_at(soup, 0, 0), 1}, {vertex_at(soup, side, 0), 1}, {vertex_at(soup, side, side), 1},
           {vertex_at(soup, 0, side), 1}};
@@ -107,6 +165,10 @@ TEST_CASE("a square with its four corners as cones maps onto the scaled square")
   CHECK(m.report.max_seam_residual < 1e-6);
   CHECK(total_image_area(m.map) == doctest::Approx(16.0).epsilon(1e-6));
   check_cones(soup, m.map, square_corners(soup, 1.0));
+  const LatticeQuads q = complete_quads(soup, adjacency, m.map);
+  CHECK(q.quads.size() == 16);
+  CHECK(euler_and_singular(q) == std::pair{1, 0});
+  check_cone_quads(q, square_corners(soup, 1.0));
   // the metric needs no change: the corners already turn by a quarter each
   CHECK(m.u.cwiseAbs().maxCoeff() < 1e-9);
 }
@@ -130,6 +192,12 @@ TEST_CASE("a valence-3/5 pair inside a square: quarter-turn transitions, cones o
   // the flat cone metric keeps the area (144 cells); rounding the cones and the
   // cut moves it by whole cells
   CHECK(std::abs(total_image_area(m.map) - 144) <= 15);
+  // the quads: one per cell, across the quarter-turned cut; the two cones are the
+  // only irregular points inside
+  const LatticeQuads q = complete_quads(soup, adjacency, m.map);
+  CHECK(static_cast<long>(q.quads.size()) == std::lround(total_image_area(m.map)));
+  CHECK(euler_and_singular(q) == std::pair{1, 2});
+  check_cone_quads(q, cones);
 }
 
 TEST_CASE("an L-shape with its five convex corners and one concave corner maps onto a lattice L") {
@@ -147,6 +215,10 @@ TEST_CASE("an L-shape with its five convex corners and one concave corner maps o
   // three unit squares of 3 x 3 cells each
   CHECK(total_image_area(m.map) == doctest::Approx(27.0).epsilon(1e-6));
   check_cones(soup, m.map, cones);
+  const LatticeQuads q = complete_quads(soup, adjacency, m.map);
+  CHECK(q.quads.size() == 27);
+  CHECK(euler_and_singular(q) == std::pair{1, 0});
+  check_cone_quads(q, cones);
 }
 
 TEST_CASE("an L-shape with a valence-5 cone near the concave corner and a valence-3 cone in the far arm") {
@@ -167,4 +239,40 @@ TEST_CASE("an L-shape with a valence-5 cone near the concave corner and a valenc
   check_cones(soup, m.map, cones);
   // the flat cone metric keeps the area (192 cells); quantization moves it by whole cells
   CHECK(std::abs(total_image_area(m.map) - 192) <= 10);
+  const LatticeQuads q = complete_quads(soup, adjacency, m.map);
+  CHECK(static_cast<long>(q.quads.size()) == std::lround(total_image_area(m.map)));
+  CHECK(euler_and_singular(q) == std::pair{1, 2});
+  check_cone_quads(q, cones);
+}
+
+TEST_CASE("placed cones on a plate with two holes: one quad per corner, eight valence-5 cones, complete quads" *
+          doctest::test_suite("slow")) {
+  // examples/plate-two-holes.geo: 100 x 60, holes of radius 10; chi = -1 and four
+  // right corners leave -8 quarter turns inside (method.md section 11)
+  io::ReadOptions read;
+  read.quad_size = 1.75;
+  const TriangleSoup soup = io::read_surface(test::example("plate-two-holes.geo"), read).soup;
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  const std::vector<Cone> cones = place_cones(soup, adjacency, 1.75);
+  REQUIRE(cones.size() == 12);
+  int corners = 0, fives = 0;
+  for (const Cone& c : cones) {
+    corners += adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)] && c.quads == 1;
+    fives += !adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)] && c.quads == 5;
+  }
+  CHECK(corners == 4);
+  CHECK(fives == 8);
+  const ConeMap m = cone_map(soup, adjacency, cones, 1.75);
+  // the cones were placed so that the field meets both holes at whole quarter turns
+  for (double r : m.field.loop_rotation) CHECK(std::abs(r) < 1.0 * M_PI / 180);
+  CHECK(m.report.inverted_triangles == 0);
+  // quad size h e^(-u) within [0.5, 2] h on nearly all of the plate
+  int in_band = 0;
+  for (Eigen::Index v = 0; v < m.u.size(); ++v) in_band += std::abs(m.u[v]) <= std::log(2.0);
+  CHECK(in_band >= 0.95 * static_cast<double>(m.u.size()));
+  const LatticeQuads q = complete_quads(soup, adjacency, m.map);
+  // 6000 - 2 pi 100 = 5372 of area at 1.75: about 1754 quads
+  CHECK(std::abs(static_cast<double>(q.quads.size()) - 1754) < 0.05 * 1754);
+  CHECK(euler_and_singular(q) == std::pair{-1, 8});
+  check_cone_quads(q, cones);
 }
