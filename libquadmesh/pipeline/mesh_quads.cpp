@@ -5,11 +5,13 @@
 #include "libquadmesh/param/form_choice.h"
 #include "libquadmesh/pipeline/internal/attempt.h"
 #include "libquadmesh/pipeline/internal/candidate_ranking.h"
+#include "libquadmesh/pipeline/internal/cone_route.h"
 #include "libquadmesh/pipeline/internal/deviation_budget.h"
 #include "libquadmesh/pipeline/internal/form_setup.h"
 #include "libquadmesh/pipeline/internal/quad_improvement.h"
 #include "libquadmesh/pipeline/internal/retry_policy.h"
 #include "libquadmesh/pipeline/internal/stages.h"
+#include "libquadmesh/quality/size_band.h"
 
 #include <fmt/format.h>
 
@@ -73,7 +75,8 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
     if (replaces(challenger.quality, best.quality, input, options.acceptance)) best = std::move(challenger);
   }
 
-  if (options.max_deviation >= 0 && best.quality.has_quads)
+  try_cones_if_off_band(setup, options, input, stages, best);
+  if (options.max_deviation >= 0 && best.quality.has_quads && best.result.singularities == "abel")
     refine_where_deviating(best, options, setup.diagonal, stages, [&](double density) {
       AttemptRequest coarser;
       coarser.coefficients = best.result.coefficients;
@@ -85,6 +88,8 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
   improve_quads(result, options, stages);
   stages.close();
   note_stray_boundary(result);
+  if (!result.quads.quads.empty() && result.size_requested > 0)
+    result.size_band_share = quad_size_band(polygon_mesh(result.quads), result.size_requested).share_in_band;
   result.rounding_attempts = rounding_attempts;
   result.form_attempts = form_attempts;
   result.timings = std::move(timings);

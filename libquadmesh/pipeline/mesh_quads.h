@@ -3,6 +3,8 @@
 // quantization, extraction. Tools add reading, writing and reporting around it.
 #pragma once
 
+#include "libquadmesh/cones/cone_set.h"
+#include "libquadmesh/cones/seamless_map.h"
 #include "libquadmesh/extract/deviation_refinement.h"
 #include "libquadmesh/extract/lattice_quads.h"
 #include "libquadmesh/extract/quad_fitting.h"
@@ -27,8 +29,16 @@ enum class RemeshPolicy {
   never,
 };
 
+/// Which singular vertices the quads may have (method.md section 11).
+enum class Singularities {
+  abel,       ///< the Abel differential's zeros only (the seed's method)
+  automatic,  ///< as abel; where its quads miss the size band, quarter-turn cones
+};
+
 struct QuadMeshOptions {
   RemeshPolicy remesh = RemeshPolicy::automatic;
+  /// abel by default until the cone route meets issue 18's acceptance everywhere.
+  Singularities singularities = Singularities::abel;
   double remesh_size = 0.0;  ///< target edge length of the remeshing; 0: min(0.4 x mean edge, size / 3)
   /// Which h: -1 "auto" (the most uniform |h|, param/form_choice.h), k >= 0 the
   /// k-th symmetric basis form; `coefficients` (when not empty) wins over both.
@@ -108,6 +118,14 @@ struct QuadMeshResult {
   /// when > 0 the input as it is was meshed too, and the better result kept.
   std::size_t long_edges_split = 0;
   bool long_edges_kept = false;  ///< the result is the split input's
+
+  // the singularities (Singularities::automatic)
+  std::string singularities = "abel";  ///< the route of the quads: "abel" or "cones"
+  std::vector<Cone> cones;             ///< the cones placed (the cone route), by vertex of `surface`
+  SeamlessMapReport cone_map;          ///< the cone route's quantization
+  double size_band_share = 0;          ///< quads within [0.5, 2] x size (quality/size_band.h); NaN: not measured
+  double abel_size_band_share = 0;     ///< the Abel result's, when automatic measured it; NaN: not measured
+  std::string cone_route_failure;      ///< why the cone route was not kept (empty: kept, or not tried)
 };
 
 /// The quads the options ask for on this surface: QuadMeshOptions::quads when

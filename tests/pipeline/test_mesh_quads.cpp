@@ -77,6 +77,23 @@ void check_result(const TriangleSoup& input, const QuadMeshResult& r, int chi, i
 
 }  // namespace
 
+TEST_CASE("singularities auto on an annulus: the Abel quads are in the size band, so auto gives exactly them") {
+  // quad size grows like r from the inner circle to the outer: within 2/3 to 4/3 of the mean
+  const TriangleSoup soup = test::annulus(1.0, 2.0, 24, 192);
+  QuadMeshOptions options;
+  options.size = 0.12;
+  const QuadMeshResult abel = mesh_quads(soup, options);
+  options.singularities = Singularities::automatic;
+  const QuadMeshResult automatic = mesh_quads(soup, options);
+  CHECK(automatic.singularities == "abel");
+  CHECK(automatic.cones.empty());
+  CHECK(automatic.abel_size_band_share >= 0.9);
+  CHECK(automatic.cone_route_failure.empty());
+  REQUIRE(automatic.quads.quads == abel.quads.quads);
+  REQUIRE(automatic.quads.points.size() == abel.quads.points.size());
+  for (std::size_t p = 0; p < abel.quads.points.size(); ++p) CHECK(automatic.quads.points[p] == abel.quads.points[p]);
+}
+
 TEST_CASE("annulus: a singularity-free grid, integer periods, boundaries on integer levels") {
   const TriangleSoup soup = test::annulus(1.0, 2.0, 12, 96);
   QuadMeshOptions options;

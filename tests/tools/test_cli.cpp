@@ -264,7 +264,7 @@ TEST_CASE("mesh: an L-bracket with a long arm fails fast, naming the long end (a
 TEST_CASE("mesh: bad options are usage errors, before any work") {
   const std::string dir = test::scratch_dir("cli_mesh_options");
   const std::string input = test::example("annulus.geo");
-  for (const char* options : {"--size -1", "--size 1.5%%", "--form 0", "--form x", "--quads 0", "--tip-angle 90", "--bogus"}) {
+  for (const char* options : {"--size -1", "--size 1.5%%", "--form 0", "--form x", "--quads 0", "--tip-angle 90", "--singularities x", "--bogus"}) {
     CAPTURE(options);
     const Run run = quadmesh("mesh " + quoted(input) + " -o " + quoted(dir + "/out.msh") + " " + std::string(options));
     CHECK(run.status == 2);
@@ -459,4 +459,41 @@ TEST_CASE("mesh and info: coordinates out of the computable range are refused be
     CHECK(info.status == 3);
     CHECK(info.out.find(c.needle) != std::string::npos);
   }
+}
+
+TEST_CASE("mesh --singularities auto: a plate whose corners get two quads each from the Abel route gets one, "
+          "eight valence-5 cones inside, every quad in the size band" *
+          doctest::test_suite("slow")) {
+  const std::string dir = test::scratch_dir("cli_singularities");
+  const std::string output = dir + "/out.msh", report = dir + "/report.json";
+  const Run run = quadmesh("mesh " + quoted(test::example("plate-two-holes.geo")) + " -o " + quoted(output) +
+                           " --size 1.5% --singularities auto -q --report " + quoted(report));
+  REQUIRE(run.status == 0);
+  CHECK(run.err.empty());
+  const auto j = nlohmann::json::parse(slurp(report));
+  const auto& s = j["singularities"];
+  CHECK(s["mode"] == "auto");
+  CHECK(s["route"] == "cones");
+  // four right corners (one quad each) leave -8 quarter turns inside: eight valence-5 cones
+  int corners = 0, fives = 0;
+  for (const auto& c : s["cones"]) {
+    corners += c["on_boundary"].get<bool>() && c["quads"] == 1;
+    fives += !c["on_boundary"].get<bool>() && c["quads"] == 5;
+  }
+  CHECK(corners == 4);
+  CHECK(fives == 8);
+  CHECK(s["size_band_share"].get<double>() >= 0.9);
+  CHECK(s["size_band_share"].get<double>() > s["abel_size_band_share"].get<double>());
+  const auto& q = j["quality"];
+  CHECK(q["euler_characteristic"] == -1);
+  CHECK(q["boundary_loops"] == 3);
+  CHECK(q["triangles"] == 0);
+  CHECK(q["inverted"] == 0);
+  CHECK(q["irregular_interior"] == 8);
+  CHECK(q["irregular_interior"] == j["expected"]["irregular_interior"]);
+  CHECK(q["irregular_boundary"] == 0);  // every corner in one quad, every other boundary point in two
+  const auto& criteria = j["acceptance"];
+  CHECK(q["min_scaled_jacobian"].get<double>() >= criteria["min_scaled_jacobian"].get<double>());
+  CHECK(q["angle_dev_mean"].get<double>() <= criteria["max_mean_angle_deviation_deg"].get<double>());
+  CHECK(q["hausdorff_rel"].get<double>() <= criteria["max_hausdorff_relative"].get<double>());
 }

@@ -239,6 +239,7 @@ int run_mesh(const MeshOptions& options, const CommonOptions& common) {
   mesher.form = options.form;
   mesher.coefficients = options.coefficients;
   mesher.rotate = options.rotate;
+  mesher.singularities = options.singularities == "auto" ? Singularities::automatic : Singularities::abel;
   mesher.smoothing = !options.no_smoothing;
   mesher.size = options.size;
   mesher.size_relative = options.size_relative;
@@ -258,6 +259,10 @@ int run_mesh(const MeshOptions& options, const CommonOptions& common) {
   write_outputs(options, result, summary);
   print_summary(summary);
   warn_if_cells_dropped(result);
+  if (!result.cone_route_failure.empty())
+    fmt::print(stderr, "warning: the quads miss the size band [0.5, 2] x --size ({:.0f}% in it) and quarter-turn "
+                       "cones did not help: {}; the Abel result is kept\n",
+               100 * result.abel_size_band_share, result.cone_route_failure);
   warn_if_stray_boundary(result);
   warn_if_inverted(summary, result);
   warn_if_far(summary, result, bounding_box_diagonal(in.surface.soup.points, in.surface.soup.triangles));

@@ -32,6 +32,7 @@ struct MeshOptions {
   int form = -1;             ///< -1: auto; else the symmetric basis form (from 0)
   std::vector<double> coefficients;  ///< --coeffs
   bool rotate = false;
+  std::string singularities = "abel";  ///< abel | auto (QuadMeshOptions::singularities)
   bool no_smoothing = false;            ///< --no-smoothing
   double corner_angle_deg = 30.0;
   double tip_angle_deg = 315.0;

@@ -155,6 +155,12 @@ int run(int argc, char** argv) {
           ->excludes("--form"),
       coefficient());
   mesh_cmd->add_flag("--rotate", mesh.rotate, "Use i*h: the same grid turned by 90 degrees");
+  mesh_cmd
+      ->add_option("--singularities", mesh.singularities,
+                   "abel: the differential's zeros only; auto: quarter-turn cones where the Abel quads miss "
+                   "[0.5, 2] x the size")
+      ->check(CLI::IsMember({"abel", "auto"}))
+      ->capture_default_str();
   mesh_cmd->add_flag("--no-smoothing", mesh.no_smoothing,
                      "Keep every quad corner where the extraction put it (no smoothing of the worst quads "
                      "or of the angles)");

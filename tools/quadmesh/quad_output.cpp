@@ -1,5 +1,7 @@
 #include "tools/quadmesh/quad_output.h"
 
+#include "libquadmesh/quality/size_band.h"
+
 #include "tools/common/quality_json.h"
 
 #include <fmt/format.h>
@@ -93,9 +95,13 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
                       double seconds) {
   MeshSummary s;
   s.input = options.input;
+  const std::vector<char> on_boundary =
+      result.cones.empty() ? std::vector<char>() : surface_adjacency(result.surface).boundary_vertex;
   s.quality = quad_quality(polygon_mesh(result.quads), &in.surface.soup);
   for (const ZeroVertex& z : result.zero_vertices)
     if (!z.corner) (z.on_boundary ? s.expected_irregular_boundary : s.expected_irregular_interior)++;
+  for (const Cone& c : result.cones)  // the cone route: its interior cones are the irregular vertices
+    if (c.quads != 4 && !on_boundary[static_cast<std::size_t>(c.vertex)]) ++s.expected_irregular_interior;
   s.input_euler_characteristic = static_cast<int>(in.surface.report.euler_characteristic);
   s.input_boundary_loops = in.surface.report.boundary_loop_count();
   s.seconds = seconds;
@@ -134,6 +140,27 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
     zeros.push_back({{"position", {p.x(), p.y(), p.z()}}, {"order", z.order}, {"on_boundary", z.on_boundary}});
   }
   j["zeros"] = zeros;
+  Json cones = Json::array();
+  for (const Cone& c : result.cones) {
+    const Vec3& p = result.surface.points[static_cast<std::size_t>(c.vertex)];
+    const bool boundary = on_boundary[static_cast<std::size_t>(c.vertex)];
+    cones.push_back({{"position", {p.x(), p.y(), p.z()}},
+                     {"quads", c.quads},
+                     {"on_boundary", boundary},
+                     {"reason", boundary ? "corner: one quad per 90 degrees of its angle"
+                                         : "Gauss-Bonnet: the quarter turns the corners leave to the inside"}});
+  }
+  const auto share = [](double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); };
+  j["singularities"] = {{"mode", options.singularities},
+                        {"route", result.singularities},
+                        {"cones", cones},
+                        {"size_band", {{"low", size_band_low}, {"high", size_band_high}}},
+                        {"size_band_share", share(result.size_band_share)},
+                        {"abel_size_band_share", share(result.abel_size_band_share)},
+                        {"cone_route_failure", result.cone_route_failure},
+                        {"integer_values", result.cone_map.integer_values},
+                        {"max_rounding", result.cone_map.max_rounding},
+                        {"stiffening_rounds", result.cone_map.stiffening_rounds}};
   j["zero_order_sum_doubled"] = result.zeros.doubled_order_sum;
   j["flipped_triangles_before"] = result.zeros.flipped_count;
   const Quantization& qz = result.quantization;
@@ -206,7 +233,19 @@ void print_summary(const MeshSummary& s) {
   fmt::print("topology            chi {} (input {}), {} boundary loops (input {})\n", q.euler_characteristic,
              s.input_euler_characteristic, q.boundary_loops, s.input_boundary_loops);
   fmt::print("Hausdorff distance  {:.3g} of the diagonal\n", q.hausdorff_rel);
-  fmt::print("quantization        distortion {:.3g}\n", s.report["quantization"]["distortion"].get<double>());
+  const Json& sg = s.report["singularities"];
+  if (sg["size_band_share"].is_number())
+    fmt::print("size                {:.0f}% of the quads within [0.5, 2] x the size ({} route{})\n",
+               100 * sg["size_band_share"].get<double>(), sg["route"].get<std::string>(),
+               sg["abel_size_band_share"].is_number() && sg["route"].get<std::string>() == "cones"
+                   ? fmt::format("; Abel {:.0f}%", 100 * sg["abel_size_band_share"].get<double>())
+                   : std::string());
+  if (sg["route"].get<std::string>() == "cones")
+    fmt::print("quantization        {} cones ({} interior), {} values made integer, largest rounding {:.3g}\n",
+               sg["cones"].size(), s.expected_irregular_interior, sg["integer_values"].get<std::size_t>(),
+               sg["max_rounding"].get<double>());
+  else
+    fmt::print("quantization        distortion {:.3g}\n", s.report["quantization"]["distortion"].get<double>());
   const Json& rf = s.report["refinement"];
   if (rf["enabled"].get<bool>())
     fmt::print("refinement          {} chords split (+{} quads, base lattice {:.0f}% of the target), deviation "

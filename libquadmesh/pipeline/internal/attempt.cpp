@@ -38,22 +38,6 @@ constexpr double zero_separation_cells = 1.0;
 /// star, but a hundred sweeps of them can spread a region over thousands of cells).
 constexpr double max_image_edge_growth = 2.0;
 
-/// Drops points no quad uses (corners of dropped cells).
-void compact(LatticeQuads& q) {
-  std::vector<int> index(q.points.size(), -1);
-  LatticeQuads out;
-  for (auto& quad : q.quads)
-    for (int& v : quad) {
-      if (index[static_cast<std::size_t>(v)] < 0) {
-        index[static_cast<std::size_t>(v)] = static_cast<int>(out.points.size());
-        out.points.push_back(q.points[static_cast<std::size_t>(v)]);
-        out.locations.push_back(q.locations[static_cast<std::size_t>(v)]);
-      }
-      v = index[static_cast<std::size_t>(v)];
-    }
-  out.quads = std::move(q.quads);
-  q = std::move(out);
-}
 
 double longest_image_edge(const FaceMap& map) {
   double longest = 0;
@@ -172,17 +156,40 @@ void extract_quads(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, 
   stages.next("extraction", "extracting the quads");
   r.quads = extract_lattice_quads(soup, adjacency, r.quantization.param, r.extraction);
   compact(r.quads);
+  r.boundary_loop_of_point = boundary_loop_of_points(soup, adjacency, loops, r.quads);
+}
+
+}  // namespace
+
+void compact(LatticeQuads& q) {
+  std::vector<int> index(q.points.size(), -1);
+  LatticeQuads out;
+  for (auto& quad : q.quads)
+    for (int& v : quad) {
+      if (index[static_cast<std::size_t>(v)] < 0) {
+        index[static_cast<std::size_t>(v)] = static_cast<int>(out.points.size());
+        out.points.push_back(q.points[static_cast<std::size_t>(v)]);
+        out.locations.push_back(q.locations[static_cast<std::size_t>(v)]);
+      }
+      v = index[static_cast<std::size_t>(v)];
+    }
+  out.quads = std::move(q.quads);
+  q = std::move(out);
+}
+
+std::vector<int> boundary_loop_of_points(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                         const NamedLoops& loops, const LatticeQuads& quads) {
   const std::vector<int> loop_of = boundary_loop_of_vertex(loops, soup.points.size());
-  for (const SurfaceLocation& loc : r.quads.locations) {
+  std::vector<int> out;
+  for (const SurfaceLocation& loc : quads.locations) {
     int loop = -1;
     if (loc.kind == SurfaceLocation::Kind::vertex) loop = loop_of[static_cast<std::size_t>(loc.a)];
     if (loc.kind == SurfaceLocation::Kind::edge && adjacency.is_boundary_edge(loc.a, loc.b))
       loop = loop_of[static_cast<std::size_t>(loc.a)];
-    r.boundary_loop_of_point.push_back(loop);
+    out.push_back(loop);
   }
+  return out;
 }
-
-}  // namespace
 
 void note_stray_boundary(QuadMeshResult& r) {
   const std::vector<int> stray = stray_boundary_points(r.quads, r.boundary_loop_of_point);

@@ -30,6 +30,14 @@ struct FormSetup {
 /// The loops of H_1(S) whose periods the quantization rounds (forms/named_loops.h).
 NamedLoops period_loops(const TriangleSoup& soup);
 
+/// Drops points no quad uses (corners of dropped cells).
+void compact(LatticeQuads& q);
+
+/// Per quad point, the boundary loop of S it lies on (by `loops`' numbering, as the
+/// output's boundary groups count them), or -1.
+std::vector<int> boundary_loop_of_points(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                         const NamedLoops& loops, const LatticeQuads& quads);
+
 /// Counts (and locates the first of) the quads' boundary points off S's boundary
 /// (QuadMeshResult::stray_boundary_points, first_stray_point).
 void note_stray_boundary(QuadMeshResult& r);

@@ -1,0 +1,110 @@
+#include "libquadmesh/pipeline/internal/cone_route.h"
+
+#include "libquadmesh/cones/cone_map.h"
+#include "libquadmesh/cones/cone_placement.h"
+#include "libquadmesh/param/internal/surface_adjacency.h"
+#include "libquadmesh/core/error.h"
+#include "libquadmesh/pipeline/internal/attempt.h"
+#include "libquadmesh/quality/size_band.h"
+
+#include <fmt/format.h>
+
+namespace qm {
+
+Candidate cone_attempt(const FormSetup& setup, Stages& stages) {
+  QuadMeshResult r = setup.preamble;
+  const TriangleSoup& soup = setup.soup;
+  const double size = setup.preamble.size_requested;
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  stages.next("cone_placement", "placing quarter-turn cones (corners, then the interior)");
+  r.cones = place_cones(soup, adjacency, size);
+  int corners = 0;
+  for (const Cone& c : r.cones) corners += adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)];
+  stages.next("cone_map", fmt::format("the seamless map with {} corner and {} interior cones", corners,
+                                      static_cast<int>(r.cones.size()) - corners));
+  const ConeMap map = cone_map(soup, adjacency, r.cones, size);
+  r.cone_map = map.report;
+  stages.next("extraction", "extracting the quads across the rotated cuts");
+  r.quads = extract_lattice_quads(soup, adjacency, map.map, r.extraction);
+  compact(r.quads);
+  r.boundary_loop_of_point = boundary_loop_of_points(soup, adjacency, period_loops(soup), r.quads);
+  r.surface = soup;
+  r.singularities = "cones";
+  r.size = size;
+  note_stray_boundary(r);
+  Candidate c;
+  c.quality = assess_candidate(r);
+  c.result = std::move(r);
+  return c;
+}
+
+bool sound(const CandidateQuality& c, SurfaceTopology input, const AcceptanceCriteria& criteria) {
+  const Shortcomings s = shortcomings(c, input, criteria);
+  return c.has_quads && s.wrong_topology == 0 && s.inverted_or_flipped == 0 && s.dropped_or_stray == 0;
+}
+
+bool cones_replace(const CandidateQuality& cones, double cones_band, double abel_band, std::size_t cones_corners,
+                   std::size_t abel_corners, SurfaceTopology input, const AcceptanceCriteria& criteria) {
+  if (!sound(cones, input, criteria)) return false;
+  // the band first; at an equal band (within a point) the corners
+  if (cones_band > abel_band + 0.01) return true;
+  return cones_band >= abel_band - 0.01 && cones_corners < abel_corners;
+}
+
+namespace {
+
+/// Corners of S (cone_placement.h corner_cones) whose quad point is in another
+/// number of quads than the corner asks for, or has no quad point.
+std::size_t corner_mismatches(const QuadMeshResult& r) {
+  const TriangleSoup& soup = r.surface;
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  std::vector<int> quads_at(r.quads.points.size(), 0);
+  for (const auto& quad : r.quads.quads)
+    for (int v : quad) ++quads_at[static_cast<std::size_t>(v)];
+  std::vector<int> point_of(soup.points.size(), -1);
+  for (std::size_t p = 0; p < r.quads.locations.size(); ++p)
+    if (r.quads.locations[p].kind == SurfaceLocation::Kind::vertex)
+      point_of[static_cast<std::size_t>(r.quads.locations[p].a)] = static_cast<int>(p);
+  std::size_t mismatches = 0;
+  for (const Cone& c : corner_cones(soup, adjacency)) {
+    const int p = point_of[static_cast<std::size_t>(c.vertex)];
+    mismatches += p < 0 || quads_at[static_cast<std::size_t>(p)] != c.quads;
+  }
+  return mismatches;
+}
+
+double band_share(const QuadMeshResult& r) {
+  if (r.quads.quads.empty() || !(r.size_requested > 0)) return 0.0;
+  return quad_size_band(polygon_mesh(r.quads), r.size_requested).share_in_band;
+}
+
+}  // namespace
+
+void try_cones_if_off_band(const FormSetup& setup, const QuadMeshOptions& options, SurfaceTopology input,
+                           Stages& stages, Candidate& best) {
+  if (options.singularities != Singularities::automatic) return;
+  const double abel_band = best.quality.has_quads ? band_share(best.result) : 0.0;
+  best.result.abel_size_band_share = abel_band;
+  const std::size_t abel_corners = best.quality.has_quads ? corner_mismatches(best.result) : 0;
+  if (abel_band >= size_band_goal && abel_corners == 0) return;
+  std::string failure;
+  try {
+    Candidate cones = cone_attempt(setup, stages);
+    const double cones_band = band_share(cones.result);
+    const std::size_t cones_corners = corner_mismatches(cones.result);
+    if (cones_replace(cones.quality, cones_band, abel_band, cones_corners, abel_corners, input, options.acceptance)) {
+      cones.result.abel_size_band_share = abel_band;
+      best = std::move(cones);
+      return;
+    }
+    failure = fmt::format("its quads were not better (sound: {}; {:.0f}% in the size band against {:.0f}%; {} "
+                          "corners with the wrong quad count against {})",
+                          sound(cones.quality, input, options.acceptance) ? "yes" : "no", 100 * cones_band,
+                          100 * abel_band, cones_corners, abel_corners);
+  } catch (const Error& e) {
+    failure = e.what();
+  }
+  best.result.cone_route_failure = failure;
+}
+
+}  // namespace qm

@@ -1,0 +1,41 @@
+// The quarter-turn cone route of `--singularities auto` (method.md section 11;
+// libquadmesh/cones/): cones placed, the integer-grid map with quarter-turn
+// transitions, its lattice cells as quads. Tried when the Abel result misses the
+// size band; kept when it is sound and keeps more quads in the band.
+#pragma once
+
+#include "libquadmesh/pipeline/internal/candidate_ranking.h"
+#include "libquadmesh/pipeline/internal/form_setup.h"
+#include "libquadmesh/pipeline/internal/stages.h"
+
+namespace qm {
+
+/// The share of quads within [0.5, 2] x the size below which `auto` tries cones.
+constexpr double size_band_goal = 0.9;
+
+/// Meshes `setup.soup` by the cone route at the requested quad edge: the result
+/// (the preamble's fields, surface, quads, boundary loops of the points, cones,
+/// extraction) measured once.
+/// Throws qm::Error when a stage cannot be done (handles whose holonomy the
+/// cones leave, a boundary loop the field cannot meet, a failed solve).
+Candidate cone_attempt(const FormSetup& setup, Stages& stages);
+
+/// Sound: quads with the input's topology, no inverted or flipped quad, no dropped
+/// cell, no stray boundary point.
+bool sound(const CandidateQuality& c, SurfaceTopology input, const AcceptanceCriteria& criteria);
+
+/// Whether the cone candidate replaces the Abel one: sound, and more of its quads
+/// in the size band (by more than a point), or as many and fewer corners of S
+/// whose quad count is not one per 90 degrees.
+bool cones_replace(const CandidateQuality& cones, double cones_band, double abel_band, std::size_t cones_corners,
+                   std::size_t abel_corners, SurfaceTopology input, const AcceptanceCriteria& criteria);
+
+/// Singularities::automatic: when `best` (the Abel result) has fewer than
+/// size_band_goal of its quads in the size band, or none, or a CAD corner with
+/// another quad count than one per 90 degrees, meshes by the cone route
+/// and keeps what cones_replace says; records both shares and, when the Abel
+/// result stays, why (QuadMeshResult::cone_route_failure). Nothing for abel.
+void try_cones_if_off_band(const FormSetup& setup, const QuadMeshOptions& options, SurfaceTopology input,
+                           Stages& stages, Candidate& best);
+
+}  // namespace qm

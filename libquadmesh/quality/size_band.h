@@ -1,0 +1,26 @@
+// Quad size against the requested size (issue 18; method.md section 11): the share
+// of quads whose size lies within [0.5, 2] x the target, and the largest ratio. A
+// quad's size is the mean of its edge lengths. Gmsh's meshes keep every quad in
+// the band; the Abel differential's quad size 1/(s|h|) does not on arms, shafts
+// and at CAD corners.
+#pragma once
+
+#include "libquadmesh/quality/quad_quality.h"
+
+namespace qm {
+
+/// The band's ends, as multiples of the target size.
+constexpr double size_band_low = 0.5;
+constexpr double size_band_high = 2.0;
+
+struct SizeBand {
+  std::size_t quads = 0;       ///< faces with 4 corners measured
+  double share_in_band = 0;    ///< of those, the share within [low, high] x target (NaN without quads)
+  double max_ratio = 0;        ///< largest size / target
+  double min_ratio = 0;        ///< smallest size / target
+};
+
+/// Precondition: target > 0.
+SizeBand quad_size_band(const PolygonMesh& mesh, double target);
+
+}  // namespace qm
