@@ -154,6 +154,12 @@ MethodRun run_method(const Method& method, const fs::path& dir, const TriangleSo
   return run;
 }
 
+/// The Gmsh program as the children run it: a path with a '/' made absolute, since
+/// each method runs in the output folder; a bare name is looked up in PATH.
+std::string program_for_children(const std::string& program) {
+  return program.find('/') == std::string::npos ? program : fs::absolute(program).string();
+}
+
 /// What `gmsh --version` prints (Gmsh writes it on stderr), or "".
 std::string gmsh_version(const std::string& gmsh, const fs::path& dir) {
   ChildOptions child;
@@ -247,7 +253,7 @@ int run_compare(const CompareOptions& options, const CommonOptions& common) {
   setup.triangulation = "input.msh";
   setup.size = size;
   setup.self = own_executable();
-  setup.gmsh = options.gmsh;
+  setup.gmsh = program_for_children(options.gmsh);
   if (common.largest_component) setup.mesh_extra_args.push_back("--largest-component");
   if (common.cad_mesh_size > 0) {
     setup.mesh_extra_args.push_back("--cad-mesh-size");
