@@ -293,6 +293,18 @@ TEST_CASE("mesh_picture: hidden faces are not drawn; colours are the scale's, sh
     if (e.name == "polygon") CHECK(e.attributes.at("fill") == hex({0.775 * best.r, 0.775 * best.g, 0.775 * best.b}));
 }
 
+TEST_CASE("mesh_picture: edges of a median under 2 px on screen are not drawn, and the caption says so") {
+  const PolygonMesh fine = grid(300, 300, 0.0);  // 400 px wide: 1.3 px per edge
+  const std::vector<XmlElement> svg = parsed(picture_of(fine, Vec3::UnitZ()).svg);
+  CHECK(count_named(svg, "polygon") == 90000);
+  for (const XmlElement& e : svg)
+    if (e.attributes.count("id") && e.attributes.at("id") == "faces") CHECK(e.attributes.at("stroke") == "none");
+  CHECK(text_with_id(svg, "caption-view").find("; edges not drawn (median 1.3 px)") != std::string::npos);
+  const std::vector<XmlElement> coarse = parsed(picture_of(grid(100, 100, 0.0), Vec3::UnitZ()).svg);  // 3.9 px
+  for (const XmlElement& e : coarse)
+    if (e.attributes.count("id") && e.attributes.at("id") == "faces") CHECK(e.attributes.at("stroke") == "#1a1a1a");
+}
+
 TEST_CASE("quadmesh render: the picture of a mesh file; bad input and bad options leave no file") {
   const std::string dir = test::scratch_dir("render_cli");
   const std::string input = dir + "/known.obj";

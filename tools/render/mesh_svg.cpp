@@ -19,6 +19,8 @@ constexpr double kPad = 10;
 constexpr double kTitleHeight = 26;
 constexpr double kLegendWidth = 190;
 constexpr double kCaptionLine = 16;
+/// Edges shorter than this on screen (median, px) are not drawn.
+constexpr double kMinEdgePx = 2.0;
 
 /// How much of a face's colour its light keeps: a headlight along the view.
 Rgb shaded(const Rgb& base, double facing) {
@@ -125,11 +127,17 @@ std::string coloring_caption(const QuadQuality& q, const MeshPictureOptions& opt
                      q.edge_length_max);
 }
 
-/// The faces that show, painted farthest first; `shows` marks their points.
+/// The faces that show, painted farthest first; `shows` marks their points. Their
+/// edges are drawn when the median edge is at least kMinEdgePx long on screen;
+/// below it they would only darken the picture, and the faces are drawn without
+/// anti-aliasing so that no seam shows between them.
 std::string faces_group(const PolygonMesh& mesh, const std::vector<DrawnFace>& faces, const ColorScale& scale,
-                        const std::vector<double>& values, double stroke, std::vector<char>& shows) {
-  std::string svg = fmt::format(
-      "<g id=\"faces\" stroke=\"#1a1a1a\" stroke-width=\"{:.2f}\" stroke-linejoin=\"round\">\n", stroke);
+                        const std::vector<double>& values, double edge_px, std::vector<char>& shows) {
+  std::string svg =
+      edge_px >= kMinEdgePx
+          ? fmt::format("<g id=\"faces\" stroke=\"#1a1a1a\" stroke-width=\"{:.2f}\" stroke-linejoin=\"round\">\n",
+                        std::clamp(edge_px / 14, 0.15, 0.8))
+          : std::string("<g id=\"faces\" stroke=\"none\" shape-rendering=\"crispEdges\">\n");
   shows.assign(mesh.points.size(), 0);
   for (const DrawnFace& face : faces) {
     svg += polygon(face, shaded(color_of(scale, values[static_cast<std::size_t>(face.face)]), face.facing));
@@ -183,7 +191,8 @@ std::string legend_group(const ColorScale& scale, FaceColoring coloring, bool ha
 
 /// The caption's lines: counts, irregular vertices, the colours' figures, the view.
 std::vector<std::string> caption_lines(const QuadQuality& q, const MeshPictureOptions& options, const View& view,
-                                       std::size_t faces_drawn, const std::map<int, std::size_t>& by_class) {
+                                       std::size_t faces_drawn, double edge_px,
+                                       const std::map<int, std::size_t>& by_class) {
   std::vector<std::string> classes;
   for (const auto& [valence, count] : by_class)
     classes.push_back(fmt::format("{}: {}", valence_name(valence), count));
@@ -194,8 +203,10 @@ std::vector<std::string> caption_lines(const QuadQuality& q, const MeshPictureOp
                       classes.empty() ? "" : fmt::format(" (valence {})", fmt::join(classes, ", ")),
                       q.irregular_boundary),
           coloring_caption(q, options),
-          fmt::format("seen from ({:.3f}, {:.3f}, {:.3f}) (--view), hidden faces removed", view.toward_viewer.x(),
-                      view.toward_viewer.y(), view.toward_viewer.z())};
+          fmt::format("seen from ({:.3f}, {:.3f}, {:.3f}) (--view), hidden faces removed{}", view.toward_viewer.x(),
+                      view.toward_viewer.y(), view.toward_viewer.z(),
+                      edge_px >= kMinEdgePx ? std::string()
+                                            : fmt::format("; edges not drawn (median {:.1f} px)", edge_px))};
 }
 
 }  // namespace
@@ -216,7 +227,7 @@ MeshPicture mesh_picture(const PolygonMesh& mesh, const QuadQuality& quality, co
   MeshPicture picture;
   picture.faces_drawn = faces.size();
   std::vector<char> shows;
-  std::string body = faces_group(mesh, faces, scale, values, std::clamp(edge_px / 14, 0.15, 0.8), shows);
+  std::string body = faces_group(mesh, faces, scale, values, edge_px, shows);
   std::map<int, std::size_t> by_class;
   body += singular_group(mesh, shows, view, frame, std::clamp(0.35 * edge_px, 1.2, 5.0), by_class, picture.marked);
   const double legend_x = frame.left + frame.width + 2 * kPad;
@@ -224,7 +235,7 @@ MeshPicture mesh_picture(const PolygonMesh& mesh, const QuadQuality& quality, co
   body += legend_group(scale, options.coloring, has_unmeasured, by_class, legend_x, legend_y);
 
   double caption_y = std::max(frame.top + frame.height, legend_y) + kPad + 12;
-  const std::vector<std::string> lines = caption_lines(quality, options, view, faces.size(), by_class);
+  const std::vector<std::string> lines = caption_lines(quality, options, view, faces.size(), edge_px, by_class);
   const char* ids[] = {"caption-counts", "caption-irregular", "caption-figures", "caption-view"};
   for (std::size_t i = 0; i < lines.size(); ++i) {
     body += fmt::format("<text id=\"{}\" x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"11\">{}</text>\n", ids[i], kPad,
