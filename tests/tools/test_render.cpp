@@ -293,7 +293,7 @@ TEST_CASE("mesh_picture: hidden faces are not drawn; colours are the scale's, sh
     if (e.name == "polygon") CHECK(e.attributes.at("fill") == hex({0.775 * best.r, 0.775 * best.g, 0.775 * best.b}));
 }
 
-TEST_CASE("mesh_picture: edges of a median under 3 px on screen are not drawn, and the caption says so") {
+TEST_CASE("mesh_picture: edges of a median under 2.5 px on screen are not drawn, and the caption says so") {
   const PolygonMesh fine = grid(300, 300, 0.0);  // 400 px wide: 1.3 px per edge
   const std::vector<XmlElement> svg = parsed(picture_of(fine, Vec3::UnitZ()).svg);
   CHECK(count_named(svg, "polygon") == 90000);

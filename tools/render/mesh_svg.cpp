@@ -20,7 +20,7 @@ constexpr double kTitleHeight = 26;
 constexpr double kLegendWidth = 190;
 constexpr double kCaptionLine = 16;
 /// Edges shorter than this on screen (median, px) are not drawn.
-constexpr double kMinEdgePx = 3.0;
+constexpr double kMinEdgePx = 2.5;
 
 /// How much of a face's colour its light keeps: a headlight along the view.
 Rgb shaded(const Rgb& base, double facing) {

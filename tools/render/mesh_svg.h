@@ -34,7 +34,7 @@ struct MeshPicture {
 /// visible_faces's (hidden ones left out, painted farthest first), each filled
 /// with its face_values colour on color_scale(options.coloring), darkened by
 /// 0.55 + 0.45 |cos| of its normal to the view (a headlight) and greyed where its
-/// back shows; their edges are drawn unless the median edge is under 3 px on
+/// back shows; their edges are drawn unless the median edge is under 2.5 px on
 /// screen (the caption says so). Interior irregular vertices (irregular_vertices) on a face that
 /// shows get a circle filled by valence: 3 black, 5 white, 6 and more magenta,
 /// 2 and less green; each circle carries data-vertex (the point index) and
