@@ -97,7 +97,6 @@ ColorScale color_scale(FaceColoring coloring) {
       scale.title = "max |corner angle - 90| (deg)";
       scale.stops = red_to_blue(45.0, 0.0);
       scale.ticks = {0.0, 10.0, 20.0, 30.0, 45.0};
-      scale.tick_format = "{:g}";
       break;
     case FaceColoring::size: {
       scale.title = "mean edge / size";
