@@ -65,6 +65,16 @@ void check_output_file(const NamedPath& output, io::Format only) {
   }
   if (only != io::Format::unknown && io::format_of(output.path) != only)
     throw UsageError(fmt::format("{}: this output must be a .msh file", output.path));
+  check_output_location(output);
+}
+
+void check_output_location(const NamedPath& output) {
+  if (output.path.empty()) return;
+  std::error_code ec;
+  if (fs::is_directory(output.path, ec))
+    throw UsageError(fmt::format("{}: is a folder, not a file", named(output)));
+  if (fs::exists(output.path, ec) && !fs::is_regular_file(output.path, ec))
+    throw UsageError(fmt::format("{}: exists and is not a regular file", named(output)));
   const fs::path folder = folder_of(output.path);
   if (!fs::is_directory(folder, ec))
     throw UsageError(fmt::format("{}: the folder {} does not exist", output.path, folder.string()));

@@ -21,6 +21,11 @@ struct NamedPath {
 /// an existing folder where this process can create files.
 void check_output_file(const NamedPath& output, io::Format only = io::Format::unknown);
 
+/// Throws UsageError unless a file of any format can be written at `output.path`:
+/// not an existing folder or other non-regular file, in an existing folder where
+/// this process can create files (check_output_file without the format).
+void check_output_location(const NamedPath& output);
+
 /// Throws UsageError unless `folder` is an existing folder where this process
 /// can create files, or does not exist and its parent is one (it is created later).
 void check_output_folder(const NamedPath& folder);

@@ -106,6 +106,47 @@ bool is_best(const ComparisonReport& r, const MethodRun& run, const Metric& m) {
   return v == best_of(r, m, [](const MethodRun& x) { return x.quality.has_value(); });
 }
 
+/// The meshes' pictures side by side, three to a row (a Markdown table whose
+/// header row holds the first three names); a method without a picture says why.
+std::string pictures_markdown(const ComparisonReport& r) {
+  constexpr std::size_t kPerRow = 3;
+  struct Cell {
+    std::string name, content;
+  };
+  std::vector<Cell> cells;
+  for (const MethodRun& run : r.runs)
+    cells.push_back({run.method.name, run.picture.empty()
+                                          ? fmt::format("no mesh: {}{}", status_name(run.status),
+                                                        run.detail.empty() ? "" : ": " + run.detail)
+                                          : fmt::format("![{0}]({1})", run.method.name, picture_file(run.method))});
+  for (const Method& method : r.skipped)
+    cells.push_back({method.name, "skipped: " + method.skipped_because});
+  if (cells.empty()) return "";
+  std::string md = fmt::format(
+      "**The meshes**, all seen from ({:.3f}, {:.3f}, {:.3f}) (the direction that shows the most of the input) "
+      "at the same scale, coloured by Verdict's scaled Jacobian; interior vertices of valence other than 4 are "
+      "marked (3 black, 5 white, 6 and more magenta). Hidden faces are removed.\n\n",
+      r.view.x(), r.view.y(), r.view.z());
+  const auto escaped_cell = [](std::string text) {
+    for (std::size_t at = text.find('|'); at != std::string::npos; at = text.find('|', at + 2))
+      text.replace(at, 1, "\\|");
+    return text;
+  };
+  for (std::size_t row = 0; row * kPerRow < cells.size(); ++row) {
+    std::string names = "|", contents = "|";
+    for (std::size_t k = row * kPerRow; k < (row + 1) * kPerRow; ++k) {
+      const std::string name = row == 0 ? fmt::format("`{}`", cells[k < cells.size() ? k : 0].name)
+                                         : fmt::format("**`{}`**", cells[k < cells.size() ? k : 0].name);
+      names += k < cells.size() ? " " + name + " |" : std::string(" |");
+      contents += k < cells.size() ? fmt::format(" {} |", escaped_cell(cells[k].content)) : std::string(" |");
+    }
+    md += names + "\n";
+    if (row == 0) md += "|---|---|---|\n";
+    md += contents + "\n";
+  }
+  return md + "\n";
+}
+
 bool ours(const MethodRun& run) {
   return run.method.name.rfind("quadmesh", 0) == 0;
 }
@@ -115,6 +156,8 @@ std::string seconds_text(double s) {
 }
 
 }  // namespace
+
+std::string picture_file(const Method& method) { return method.name + ".svg"; }
 
 Json report_json(const ComparisonReport& r) {
   Json j;
@@ -127,6 +170,7 @@ Json report_json(const ComparisonReport& r) {
                     {"boundary_loops", r.reference_boundary_loops}};
   j["timeout"] = r.timeout_seconds;
   j["gmsh_version"] = r.gmsh_version;
+  j["gmsh_program"] = r.gmsh_program;
   Json methods = Json::array();
   for (const MethodRun& run : r.runs) {
     Json m;
@@ -136,6 +180,7 @@ Json report_json(const ComparisonReport& r) {
     m["detail"] = run.detail;
     m["description"] = run.method.description;
     m["mesh"] = run.quality ? Json(run.method.mesh_file) : Json(nullptr);
+    m["picture"] = run.picture.empty() ? Json(nullptr) : Json(picture_file(run.method));
     if (run.quality) {
       // the keys, taken from the one quality JSON (irregular_vertices: interior)
       const Json all = quality_json(*run.quality);
@@ -152,6 +197,11 @@ Json report_json(const ComparisonReport& r) {
     methods.push_back(std::move(m));
   }
   j["methods"] = std::move(methods);
+  Json skipped = Json::array();
+  for (const Method& method : r.skipped)
+    skipped.push_back({{"name", method.name}, {"reason", method.skipped_because}, {"description", method.description}});
+  j["skipped"] = std::move(skipped);
+  j["view"] = {r.view.x(), r.view.y(), r.view.z()};
   return j;
 }
 
@@ -164,6 +214,8 @@ std::string report_verdict(const ComparisonReport& r) {
                                      run.detail.empty() ? "no mesh" : run.detail));
   if (!failures.empty())
     sentences.push_back(fmt::format("No mesh from: {}.", fmt::join(failures, "; ")));
+  for (const Method& method : r.skipped)
+    sentences.push_back(fmt::format("Not run: {}: {}.", method.name, method.skipped_because));
 
   const MethodRun* mine = nullptr;
   for (const MethodRun& run : r.runs)
@@ -246,10 +298,12 @@ std::string report_markdown(const ComparisonReport& r) {
       "Input `{}`; target quad size {:.4g} ({:.3g}% of the bounding-box diagonal {:.4g}). "
       "Every row is measured by the same quality module against the same reference, the input "
       "triangulation (`input.msh`: {} points, {} triangles, chi {}, {} boundary loops); times are "
-      "wall-clock seconds of each method's own process in this run (limit {:g} s). Gmsh {}.\n\n",
+      "wall-clock seconds of each method's own process in this run (limit {:g} s). Every Gmsh row ran "
+      "`{}`, Gmsh {}.\n\n",
       r.input, r.size, 100.0 * r.size / r.diagonal, r.diagonal, r.reference_points,
       r.reference_triangles, r.reference_euler_characteristic, r.reference_boundary_loops,
-      r.timeout_seconds, r.gmsh_version.empty() ? "version unknown" : r.gmsh_version);
+      r.timeout_seconds, r.gmsh_program.empty() ? "gmsh" : r.gmsh_program,
+      r.gmsh_version.empty() ? "version unknown" : r.gmsh_version);
 
   md += "| method | status | seconds |";
   for (const Metric& m : metrics())
@@ -276,6 +330,12 @@ std::string report_markdown(const ComparisonReport& r) {
     }
     md += "\n";
   }
+  for (const Method& method : r.skipped) {
+    md += fmt::format("| `{}` | skipped | - |", method.name);
+    for (std::size_t i = 0; i < metrics().size(); ++i)
+      md += " - |";
+    md += "\n";
+  }
   md +=
       "\n**Bold**: the best value of the rows with a mesh (for boundary loops and chi: equal to "
       "the input's). Every shape figure of a quad is Verdict's (VTK's vtkMeshQuality, ParaView, "
@@ -288,6 +348,7 @@ std::string report_markdown(const ComparisonReport& r) {
       "distance to the input triangulation / its bounding-box diagonal. Triangles are counted, "
       "not measured.\n\n";
   md += fmt::format("**Verdict.** {}\n\n", report_verdict(r));
+  md += pictures_markdown(r);
   md += fmt::format("![Angle deviation of every method]({})\n\n", kAngleHistogramFile);
   md += fmt::format("![Scaled Jacobian of every method]({})\n\n", kJacobianHistogramFile);
   md += "## Methods\n\n";
@@ -299,6 +360,8 @@ std::string report_markdown(const ComparisonReport& r) {
     if (!run.quality) md += fmt::format(" **{}**: {}.", status_name(run.status), run.detail);
     md += "\n";
   }
+  for (const Method& method : r.skipped)
+    md += fmt::format("- `{}`: {}. **skipped**: {}.\n", method.name, method.description, method.skipped_because);
   md +=
       "\nOpen the meshes side by side: `gmsh quadmesh.msh gmsh-frontal-blossom.msh` "
       "(Tools > Statistics; Tools > Options > Mesh > Visibility).\n";

@@ -1,5 +1,7 @@
 #include "tools/compare/histogram_svg.h"
 
+#include "tools/common/xml_text.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -27,29 +29,6 @@ Histogram make_histogram(const std::vector<double>& values, double lo, double hi
 }
 
 namespace {
-
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
 
 /// A tick step of 1, 2 or 5 times a power of ten giving about `target` ticks.
 double nice_step(double range, int target) {
@@ -103,7 +82,7 @@ std::string histogram_svg(const HistogramPicture& picture,
       "{1}\" font-family=\"sans-serif\" font-size=\"12\">\n"
       "<rect width=\"{0}\" height=\"{1}\" fill=\"white\"/>\n"
       "<text x=\"{2}\" y=\"24\" font-size=\"15\" font-weight=\"bold\">{3}</text>\n",
-      width, height, left, escaped(picture.title));
+      width, height, left, xml_escaped(picture.title));
 
   // grid and axes
   for (double y : y_ticks) {
@@ -124,8 +103,8 @@ std::string histogram_svg(const HistogramPicture& picture,
       "stroke=\"#999\"/>\n"
       "<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>\n"
       "<text transform=\"translate(16 {:.1f}) rotate(-90)\" text-anchor=\"middle\">{}</text>\n",
-      left, top, plot_w, plot_h, left + plot_w / 2, height - 12, escaped(picture.x_label),
-      top + plot_h / 2, escaped(picture.y_label));
+      left, top, plot_w, plot_h, left + plot_w / 2, height - 12, xml_escaped(picture.x_label),
+      top + plot_h / 2, xml_escaped(picture.y_label));
 
   // one step line per method, and the legend
   double legend_y = top + 8;
@@ -156,11 +135,11 @@ std::string histogram_svg(const HistogramPicture& picture,
         "<text x=\"{:.1f}\" y=\"{:.1f}\"{}>{}</text>\n",
         lx, legend_y, lx + 22, legend_y, drawn ? color : "#bbb", stroke,
         drawn ? "" : " stroke-dasharray=\"3 3\"", lx + 28, legend_y + 4,
-        drawn ? "" : " fill=\"#888\"", escaped(s.name));
+        drawn ? "" : " fill=\"#888\"", xml_escaped(s.name));
     const std::string note = drawn ? fmt::format("{} {}", s.histogram.count, picture.unit)
                                    : (s.note.empty() ? std::string("no mesh") : s.note);
     svg += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"10\" fill=\"#666\">{}</text>\n",
-                       lx + 28, legend_y + 17, escaped(note));
+                       lx + 28, legend_y + 17, xml_escaped(note));
     legend_y += 36;
   }
   svg += "</svg>\n";

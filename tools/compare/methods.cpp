@@ -1,5 +1,7 @@
 #include "tools/compare/methods.h"
 
+#include "tools/compare/gmsh_version.h"
+
 #include <fmt/format.h>
 
 namespace qm::tools {
@@ -30,6 +32,21 @@ std::string load_model(const MethodSetup& setup) {
       "ClassifySurfaces{{{:g} * Pi / 180, 1, 1, Pi}};\n"
       "CreateGeometry;\n",
       setup.triangulation, setup.feature_angle_deg);
+}
+
+/// Gmsh's quasi-structured quad mesher with the defaults its authors chose (size
+/// map from the background mesh, every topology optimization), at twice the size.
+std::string quasi_structured_script(const MethodSetup& setup, const std::string& name) {
+  const double size = kQuasiStructuredSizeFactor * setup.size;
+  return script_header(name) + load_model(setup) +
+         fmt::format(
+             "Mesh.Algorithm = 11;  // quasi-structured quad (Gmsh >= 4.9)\n"
+             "Mesh.MeshSizeMin = {:.17g};  // {:g} x the target: it splits its quads in four\n"
+             "Mesh.MeshSizeMax = {:.17g};\n"
+             "Mesh.SaveAll = 1;\n"
+             "Mesh 2;\n"
+             "Save \"{}.msh\";\n",
+             size, kQuasiStructuredSizeFactor, size, name);
 }
 
 std::string remesh_script(const MethodSetup& setup, const std::string& name,
@@ -128,6 +145,18 @@ std::vector<Method> comparison_methods(const MethodSetup& setup) {
                   "1), {}",
                   source, sizes),
       remesh_script(setup, quad_frontal, {8, 1})));
+
+  const std::string quasi = "gmsh-quasi-structured";
+  Method qqs = gmsh_method(
+      setup, quasi,
+      fmt::format("Gmsh remeshing of {}: the quasi-structured quad mesher (Mesh.Algorithm = 11, Gmsh 4.9 and "
+                  "later; its own defaults: size map from the background mesh, cavity and disk remeshing and "
+                  "patterns on simple faces), Mesh.MeshSizeMin = Mesh.MeshSizeMax = {:g} x --size, since it "
+                  "splits every quad of its first mesh in four",
+                  source, kQuasiStructuredSizeFactor),
+      quasi_structured_script(setup, quasi));
+  qqs.skipped_because = quasi_structured_missing(setup.gmsh_version);
+  methods.push_back(std::move(qqs));
   return methods;
 }
 

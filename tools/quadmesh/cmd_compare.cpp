@@ -17,6 +17,7 @@
 #include "tools/compare/child_process.h"
 #include "tools/compare/comparison_report.h"
 #include "tools/compare/methods.h"
+#include "tools/render/mesh_svg.h"
 #include "libquadmesh/quality/hausdorff.h"
 #include "tools/quadmesh/commands.h"
 
@@ -61,6 +62,7 @@ std::vector<std::string> files_written() {
     names.push_back(method.mesh_file);
     if (!method.script_file.empty()) names.push_back(method.script_file);
     names.push_back(method.name + ".log");
+    names.push_back(picture_file(method));
   }
   return names;
 }
@@ -88,13 +90,39 @@ std::string first_error_line(const std::string& log_path) {
   return {};
 }
 
-/// Runs one method in its child process and measures its mesh.
+/// How every mesh is drawn: from the direction that shows the most of the
+/// reference, at the reference's scale, so that the pictures compare.
+struct PictureSetup {
+  View view;
+  Frame frame;
+  MeshPictureOptions options;
+};
+
+/// The picture size in the report: three side by side.
+constexpr double kPictureWidth = 360, kPictureMaxHeight = 330;
+
+PictureSetup picture_setup(const TriangleSoup& reference) {
+  PolygonMesh triangles;
+  triangles.points = reference.points;
+  for (const Triangle& t : reference.triangles)
+    triangles.faces.push_back({t[0], t[1], t[2]});
+  PictureSetup setup;
+  setup.view = view_toward(most_area_direction(triangles));
+  setup.frame = frame_fitting(reference.points, setup.view, kPictureWidth, kPictureMaxHeight);
+  setup.options.coloring = FaceColoring::scaled_jacobian;
+  setup.options.width = kPictureWidth;
+  setup.options.max_height = kPictureMaxHeight;
+  return setup;
+}
+
+/// Runs one method in its child process and measures and draws its mesh.
 MethodRun run_method(const Method& method, const fs::path& dir, const TriangleSoup& reference,
-                     double timeout) {
+                     double timeout, const PictureSetup& drawing) {
   MethodRun run;
   run.method = method;
   std::error_code ignored;
   fs::remove(dir / method.mesh_file, ignored);  // never measure a previous run's mesh
+  fs::remove(dir / picture_file(method), ignored);  // nor show its picture
   if (!method.script_file.empty()) write_text(dir / method.script_file, method.script);
 
   ChildOptions child;
@@ -116,11 +144,20 @@ MethodRun run_method(const Method& method, const fs::path& dir, const TriangleSo
     const PolygonMesh mesh = io::read_polygon_mesh((dir / method.mesh_file).string());
     run.quality = quad_quality(mesh, &reference);
     run.samples = quad_shape_samples(mesh);
+    MeshPictureOptions options = drawing.options;
+    options.title = method.name;
+    run.picture = mesh_picture(mesh, *run.quality, drawing.view, drawing.frame, options).svg;
   } catch (const Error& e) {
     run.status = ChildStatus::failed;
     run.detail = fmt::format("no usable mesh: {}", e.what());
   }
   return run;
+}
+
+/// The Gmsh program as the children run it: a path with a '/' made absolute, since
+/// each method runs in the output folder; a bare name is looked up in PATH.
+std::string program_for_children(const std::string& program) {
+  return program.find('/') == std::string::npos ? program : fs::absolute(program).string();
 }
 
 /// What `gmsh --version` prints (Gmsh writes it on stderr), or "".
@@ -197,6 +234,7 @@ int run_compare(const CompareOptions& options, const CommonOptions& common) {
   report.diagonal = diagonal;
   report.timeout_seconds = options.timeout;
   report.gmsh_version = gmsh_version(options.gmsh, dir);
+  report.gmsh_program = options.gmsh;
   report.reference_points = reference.points.size();
   report.reference_triangles = reference.triangles.size();
   {
@@ -215,15 +253,23 @@ int run_compare(const CompareOptions& options, const CommonOptions& common) {
   setup.triangulation = "input.msh";
   setup.size = size;
   setup.self = own_executable();
-  setup.gmsh = options.gmsh;
+  setup.gmsh = program_for_children(options.gmsh);
   if (common.largest_component) setup.mesh_extra_args.push_back("--largest-component");
   if (common.cad_mesh_size > 0) {
     setup.mesh_extra_args.push_back("--cad-mesh-size");
     setup.mesh_extra_args.push_back(fmt::format("{:.17g}", common.cad_mesh_size));
   }
+  setup.gmsh_version = report.gmsh_version;
+  const PictureSetup drawing = picture_setup(reference);
+  report.view = drawing.view.toward_viewer;
   for (const Method& method : comparison_methods(setup)) {
+    if (!method.skipped_because.empty()) {
+      progress.stage(fmt::format("skipping {}: {}", method.name, method.skipped_because));
+      report.skipped.push_back(method);
+      continue;
+    }
     progress.stage(fmt::format("running {} (limit {:g} s)", method.name, options.timeout));
-    report.runs.push_back(run_method(method, dir, reference, options.timeout));
+    report.runs.push_back(run_method(method, dir, reference, options.timeout, drawing));
     const MethodRun& run = report.runs.back();
     progress.stage(fmt::format("{}: {} after {:.2f} s{}", method.name, status_name(run.status),
                                run.seconds, run.detail.empty() ? "" : ": " + run.detail));
@@ -239,6 +285,8 @@ int run_compare(const CompareOptions& options, const CommonOptions& common) {
     add(dir / kAngleHistogramFile, angle_histogram_svg(report));
     add(dir / kJacobianHistogramFile, jacobian_histogram_svg(report));
     add(dir / "report.md", report_markdown(report));
+    for (const MethodRun& run : report.runs)
+      if (!run.picture.empty()) add(dir / picture_file(run.method), run.picture);
     reports.commit();
   } catch (const Error& e) {
     throw UsageError(fmt::format("{}; no report was written", e.what()));
@@ -247,6 +295,8 @@ int run_compare(const CompareOptions& options, const CommonOptions& common) {
   fmt::print("{} at size {:.4g}: {}\n", options.input, size, (dir / "report.md").string());
   for (const MethodRun& run : report.runs)
     fmt::print("  {}\n", summary_line(run));
+  for (const Method& method : report.skipped)
+    fmt::print("  {:<32} skipped   {}\n", method.name, method.skipped_because);
   fmt::print("{}\n", report_verdict(report));
   return exit_ok;
 }

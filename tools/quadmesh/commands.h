@@ -66,10 +66,21 @@ struct CompareOptions {
   std::string gmsh = "gmsh";   ///< --gmsh: the Gmsh program the baselines run
 };
 
+struct RenderOptions {
+  std::string input;
+  std::string output;          ///< -o: the picture (.svg)
+  std::string color = "sj";    ///< --color: sj, angle, size or none (face_coloring_named)
+  std::vector<double> view;    ///< --view x,y,z towards the viewer; empty: the most area
+  double size = 0.0;           ///< --size: reference length of --color size; 0: the mean edge length
+  double size_relative = 0.0;  ///< --size P%: P/100 of the bounding-box diagonal
+  double width = 640;          ///< --width: the drawing's width in pixels (the legend is beside it)
+};
+
 int run_info(const InfoOptions& info, const CommonOptions& common);
 int run_mesh(const MeshOptions& mesh, const CommonOptions& common);
 int run_forms(const FormsOptions& forms, const CommonOptions& common);
 int run_quality(const QualityOptions& quality, const CommonOptions& common);
 int run_compare(const CompareOptions& compare, const CommonOptions& common);
+int run_render(const RenderOptions& render, const CommonOptions& common);
 
 }  // namespace qm::tools

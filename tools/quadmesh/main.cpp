@@ -209,8 +209,30 @@ int run(int argc, char** argv) {
           seconds());
   compare_cmd->add_option("--gmsh", compare.gmsh, "The Gmsh program of the baselines (default: gmsh)");
 
+  RenderOptions render;
+  CLI::App* render_cmd = app.add_subcommand(
+      "render", "A picture of a quad (or mixed) mesh as SVG: faces coloured by quality, singular vertices marked");
+  render_cmd->add_option("MESH", render.input, "Mesh to draw (triangles and quads)")->required();
+  render_cmd->add_option("-o,--output", render.output, "The picture (.svg)")->required();
+  checked(render_cmd->add_option("--color", render.color,
+                                 "Colour the faces by: sj (Verdict scaled Jacobian), angle (largest corner angle "
+                                 "deviation), size (mean edge length / --size), none (default sj)"),
+          one_of({"sj", "angle", "size", "none"}));
+  std::string view_text;
+  checked(render_cmd->add_option("--view", view_text,
+                                 "Direction towards the viewer, x,y,z (default: the one that shows the most area)"),
+          direction());
+  std::string render_size;
+  checked(render_cmd->add_option("--size", render_size,
+                                 "Reference length of --color size, or P% of the bounding-box diagonal "
+                                 "(default: the mean edge length)"),
+          length_or_percent());
+  checked(render_cmd->add_option("--width", render.width,
+                                 "Width of the drawing in pixels; the legend and margins add 220 (default 640)"),
+          picture_width());
+
   // Options given after the subcommand apply too (quadmesh mesh f.obj -o g.msh --quiet).
-  for (CLI::App* sub : {info_cmd, forms_cmd, mesh_cmd, quality_cmd, compare_cmd}) {
+  for (CLI::App* sub : {info_cmd, forms_cmd, mesh_cmd, quality_cmd, compare_cmd, render_cmd}) {
     sub->add_flag("-q,--quiet", common.quiet, "No progress lines on stderr");
     sub->add_flag("--largest-component", common.largest_component,
                   "Keep only the largest connected component of the input");
@@ -226,7 +248,7 @@ int run(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     // one line, like every other error (CLI11's own would add a second)
-    print_error(parse_error_line(e, app, {info_cmd, forms_cmd, mesh_cmd, quality_cmd, compare_cmd},
+    print_error(parse_error_line(e, app, {info_cmd, forms_cmd, mesh_cmd, quality_cmd, compare_cmd, render_cmd},
                                  argc, argv));
     return exit_usage;
   }
@@ -240,6 +262,12 @@ int run(int argc, char** argv) {
   if (compare_cmd->parsed()) {
     set_length_or_percent(compare_size, compare.size, compare.size_relative);
     return run_compare(compare, common);
+  }
+  if (render_cmd->parsed()) {
+    double xyz[3];
+    if (parse_direction(view_text, xyz)) render.view = {xyz[0], xyz[1], xyz[2]};
+    set_length_or_percent(render_size, render.size, render.size_relative);
+    return run_render(render, common);
   }
   if (form_choice != "auto") mesh.form = std::stoi(form_choice) - 1;
   set_length_or_percent(size_text, mesh.size, mesh.size_relative);

@@ -129,4 +129,45 @@ ValueCheck msh_version() {
   return {rule, "4.1|2.2"};
 }
 
+ValueCheck one_of(const std::vector<std::string>& values) {
+  ValueRule rule = [values](const std::string& text) {
+    if (std::find(values.begin(), values.end(), text) != values.end()) return std::string();
+    return fmt::format("must be one of {}", fmt::join(values, ", "));
+  };
+  return {rule, fmt::format("{}", fmt::join(values, "|"))};
+}
+
+bool parse_direction(const std::string& text, double (&xyz)[3]) {
+  std::size_t start = 0;
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t comma = text.find(',', start);
+    if ((i < 2) != (comma != std::string::npos)) return false;
+    const std::string item = text.substr(start, i < 2 ? comma - start : std::string::npos);
+    if (!parse_number(item, xyz[i]) || !std::isfinite(xyz[i]) || std::abs(xyz[i]) > kMaxLength) return false;
+    start = comma + 1;
+  }
+  return xyz[0] != 0 || xyz[1] != 0 || xyz[2] != 0;
+}
+
+ValueCheck direction() {
+  ValueRule rule = [](const std::string& text) {
+    double xyz[3];
+    return parse_direction(text, xyz) ? std::string()
+                                      : fmt::format("must be three finite numbers x,y,z of at most {:g} in size, "
+                                                    "not all 0 (the direction towards the viewer)",
+                                                    kMaxLength);
+  };
+  return {rule, "X,Y,Z"};
+}
+
+ValueCheck picture_width() {
+  ValueRule rule = [](const std::string& text) {
+    const std::string must = fmt::format("must be a whole number of pixels from {:g} to {:g}", kMinPictureWidth,
+                                         kMaxPictureWidth);
+    if (!whole_number(static_cast<std::uint64_t>(kMaxPictureWidth))(text).empty()) return must;
+    return std::stod(text) >= kMinPictureWidth ? std::string() : must;
+  };
+  return {rule, "PX"};
+}
+
 }  // namespace qm::tools

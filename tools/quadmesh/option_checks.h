@@ -27,6 +27,9 @@ constexpr double kMaxLength = 1e12;
 constexpr std::uint64_t kMaxCount = 1000000000;  // 1e9
 constexpr double kMaxSeconds = 1e6;
 constexpr double kMaxGibibytes = 1e6;
+/// The range of a picture's width in pixels (--width).
+constexpr double kMinPictureWidth = 100;
+constexpr double kMaxPictureWidth = 4000;
 
 /// Attaches `check` to `option`: a value it refuses ends the parse with a
 /// UsageError "OPTION VALUE: PROBLEM" (exit 2). Returns `option`.
@@ -51,5 +54,14 @@ ValueCheck seconds();
 ValueCheck gibibytes();
 /// --msh-version: 4.1 or 2.2, as written.
 ValueCheck msh_version();
+/// One of `values`, as written (--color).
+ValueCheck one_of(const std::vector<std::string>& values);
+/// A direction x,y,z (--view): three finite numbers of size at most kMaxLength,
+/// not all 0.
+ValueCheck direction();
+/// --width: a whole number of pixels from kMinPictureWidth to kMaxPictureWidth.
+ValueCheck picture_width();
+/// Reads a text direction() accepts into `xyz`; false for any other text.
+bool parse_direction(const std::string& text, double (&xyz)[3]);
 
 }  // namespace qm::tools
