@@ -51,13 +51,22 @@ bool same_file(const std::string& a, const std::string& b) {
   return !ec && ca == cb;
 }
 
-void check_output_file(const NamedPath& output, io::Format only) {
-  if (output.path.empty()) return;
+namespace {
+
+/// An output file's path must not be a folder or another kind of file.
+void require_file_path(const NamedPath& output) {
   std::error_code ec;
   if (fs::is_directory(output.path, ec))
     throw UsageError(fmt::format("{}: is a folder, not a file", named(output)));
   if (fs::exists(output.path, ec) && !fs::is_regular_file(output.path, ec))
     throw UsageError(fmt::format("{}: exists and is not a regular file", named(output)));
+}
+
+}  // namespace
+
+void check_output_file(const NamedPath& output, io::Format only) {
+  if (output.path.empty()) return;
+  require_file_path(output);
   try {
     if (output.option != "--report") io::check_output_path(output.path);  // format and folder
   } catch (const Error& e) {
@@ -70,11 +79,8 @@ void check_output_file(const NamedPath& output, io::Format only) {
 
 void check_output_location(const NamedPath& output) {
   if (output.path.empty()) return;
+  require_file_path(output);
   std::error_code ec;
-  if (fs::is_directory(output.path, ec))
-    throw UsageError(fmt::format("{}: is a folder, not a file", named(output)));
-  if (fs::exists(output.path, ec) && !fs::is_regular_file(output.path, ec))
-    throw UsageError(fmt::format("{}: exists and is not a regular file", named(output)));
   const fs::path folder = folder_of(output.path);
   if (!fs::is_directory(folder, ec))
     throw UsageError(fmt::format("{}: the folder {} does not exist", output.path, folder.string()));
