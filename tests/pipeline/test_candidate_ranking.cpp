@@ -1,6 +1,7 @@
 // The ranking of candidate results (pipeline/internal/candidate_ranking.h) on
 // made-up measurements, and the measurement itself on small quad meshes.
 #include "libquadmesh/pipeline/internal/candidate_ranking.h"
+#include "libquadmesh/pipeline/internal/cone_route.h"
 
 #include "libquadmesh/quality/quad_quality.h"
 
@@ -120,4 +121,26 @@ TEST_CASE("ranking: the measurement of a result, once, and its sound Jacobian as
   CHECK_FALSE(none.has_quads);
   CHECK(none.min_sound_scaled_jacobian == 1.0);
   CHECK(std::isnan(none.angle_dev_mean));
+}
+
+TEST_CASE("singularities auto: the cone result replaces the Abel one only when sound and better in band or corners") {
+  const AcceptanceCriteria criteria;
+  const CandidateQuality cones = sound();
+  // more quads in the size band, by more than a point
+  CHECK(cones_replace(cones, 0.95, 0.80, 0, 0, annulus, criteria));
+  CHECK_FALSE(cones_replace(cones, 0.805, 0.80, 0, 0, annulus, criteria));
+  // the corners right (one quad per 90 degrees) while the band keeps its goal
+  CHECK(cones_replace(cones, 0.97, 0.98, 0, 4, annulus, criteria));
+  CHECK_FALSE(cones_replace(cones, size_band_goal - 0.05, 0.86, 0, 4, annulus, criteria));
+  CHECK_FALSE(cones_replace(cones, 0.97, 0.98, 2, 2, annulus, criteria));
+  // never when unsound, however good the band
+  CandidateQuality dropped = sound();
+  dropped.dropped_cells = 1;
+  CHECK_FALSE(cones_replace(dropped, 1.0, 0.5, 0, 4, annulus, criteria));
+  CandidateQuality inverted = sound();
+  inverted.inverted = 1;
+  CHECK_FALSE(cones_replace(inverted, 1.0, 0.5, 0, 4, annulus, criteria));
+  CandidateQuality torn = sound();
+  torn.topology = {-1, 2};
+  CHECK_FALSE(cones_replace(torn, 1.0, 0.5, 0, 4, annulus, criteria));
 }

@@ -2,8 +2,10 @@
 // reading and writing), as ratios against its forms stage measured in the same
 // run (issue 4: the whole mesh stage within about 3x of the forms stage).
 //
-//   bench_mesh [FILE] [--size P%]
-// FILE defaults to the shared bunny-open-large.obj (278k triangles).
+//   bench_mesh [FILE] [--size P%] [--auto]
+// FILE defaults to the shared bunny-open-large.obj (278k triangles). With --auto the
+// job runs again with --singularities auto, and its time is printed as a ratio
+// against the Abel run (issue 18: the cones within about 2x of it).
 #include "io/read_surface.h"
 #include "libquadmesh/pipeline/mesh_quads.h"
 #include "libquadmesh/topology/applicability.h"
@@ -21,6 +23,8 @@ int main(int argc, char** argv) {
   app.add_option("FILE", file, "Input surface");
   app.add_option("--size", percent, "Quad size in percent of the bounding-box diagonal")
       ->check(CLI::PositiveNumber);
+  bool automatic = false;
+  app.add_flag("--auto", automatic, "Also run --singularities auto and print its time against the Abel run's");
   CLI11_PARSE(app, argc, argv);
   try {
     const qm::AnalyzedSurface surface = qm::analyze_topology(qm::io::read_surface(file).soup);
@@ -50,6 +54,15 @@ int main(int argc, char** argv) {
     for (const auto& [name, s] : stages)
       if (name != "forms") fmt::print("  {:<16} {:.3f} s  = {:.2f}\n", name, s, s / forms);
     fmt::print("whole mesh job   {:.3f} s  = {:.2f} x the forms stage\n", total, total / forms);
+    if (automatic) {
+      options.singularities = qm::Singularities::automatic;
+      const auto again = std::chrono::steady_clock::now();
+      const qm::QuadMeshResult a = qm::mesh_quads(surface.soup, options);
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - again).count();
+      fmt::print("singularities auto {:.3f} s  = {:.2f} x the Abel run ({} route, {} quads, {:.0f}% in the size band{})\n",
+                 seconds, seconds / total, a.singularities, a.quads.quads.size(), 100 * a.size_band_share,
+                 a.cone_route_failure.empty() ? std::string() : "; cones not kept: " + a.cone_route_failure);
+    }
   } catch (const std::exception& e) {
     fmt::print(stderr, "bench_mesh: error: {}\n", e.what());
     return 1;

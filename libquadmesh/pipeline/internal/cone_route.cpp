@@ -46,9 +46,10 @@ bool sound(const CandidateQuality& c, SurfaceTopology input, const AcceptanceCri
 bool cones_replace(const CandidateQuality& cones, double cones_band, double abel_band, std::size_t cones_corners,
                    std::size_t abel_corners, SurfaceTopology input, const AcceptanceCriteria& criteria) {
   if (!sound(cones, input, criteria)) return false;
-  // the band first; at an equal band (within a point) the corners
+  // more quads in the band (by more than a point), or the corners right while the
+  // band keeps its goal
   if (cones_band > abel_band + 0.01) return true;
-  return cones_band >= abel_band - 0.01 && cones_corners < abel_corners;
+  return cones_corners < abel_corners && cones_band >= size_band_goal;
 }
 
 namespace {

@@ -25,8 +25,8 @@ Candidate cone_attempt(const FormSetup& setup, Stages& stages);
 bool sound(const CandidateQuality& c, SurfaceTopology input, const AcceptanceCriteria& criteria);
 
 /// Whether the cone candidate replaces the Abel one: sound, and more of its quads
-/// in the size band (by more than a point), or as many and fewer corners of S
-/// whose quad count is not one per 90 degrees.
+/// in the size band (by more than a point), or fewer corners of S whose quad count
+/// is not one per 90 degrees with size_band_goal of its quads in the band.
 bool cones_replace(const CandidateQuality& cones, double cones_band, double abel_band, std::size_t cones_corners,
                    std::size_t abel_corners, SurfaceTopology input, const AcceptanceCriteria& criteria);
 
