@@ -75,7 +75,7 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
     if (replaces(challenger.quality, best.quality, input, options.acceptance)) best = std::move(challenger);
   }
 
-  try_cones_if_off_band(setup, options, input, stages, best);
+  const ConeRouteOutcome cones = try_cones_if_off_band(setup, options, input, stages, best);
   if (options.max_deviation >= 0 && best.quality.has_quads && best.result.singularities == "abel")
     refine_where_deviating(best, options, setup.diagonal, stages, [&](double density) {
       AttemptRequest coarser;
@@ -90,6 +90,8 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
   note_stray_boundary(result);
   if (!result.quads.quads.empty() && result.size_requested > 0)
     result.size_band_share = quad_size_band(polygon_mesh(result.quads), result.size_requested).share_in_band;
+  result.abel_size_band_share = cones.abel_size_band_share;
+  result.cone_route_failure = cones.failure;
   result.rounding_attempts = rounding_attempts;
   result.form_attempts = form_attempts;
   result.timings = std::move(timings);

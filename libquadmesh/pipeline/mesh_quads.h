@@ -18,6 +18,7 @@
 #include "libquadmesh/pipeline/acceptance_criteria.h"
 
 #include <functional>
+#include <limits>
 #include <string>
 
 namespace qm {
@@ -123,8 +124,8 @@ struct QuadMeshResult {
   std::string singularities = "abel";  ///< the route of the quads: "abel" or "cones"
   std::vector<Cone> cones;             ///< the cones placed (the cone route), by vertex of `surface`
   SeamlessMapReport cone_map;          ///< the cone route's quantization
-  double size_band_share = 0;          ///< quads within [0.5, 2] x size (quality/size_band.h); NaN: not measured
-  double abel_size_band_share = 0;     ///< the Abel result's, when automatic measured it; NaN: not measured
+  double size_band_share = std::numeric_limits<double>::quiet_NaN();       ///< quads within [0.5, 2] x size (quality/size_band.h); NaN: not measured
+  double abel_size_band_share = std::numeric_limits<double>::quiet_NaN();  ///< the Abel result's, when automatic measured it; NaN: not measured
   std::string cone_route_failure;      ///< why the cone route was not kept (empty: kept, or not tried)
 };
 

@@ -5,6 +5,7 @@
 #include "libquadmesh/param/internal/surface_adjacency.h"
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/pipeline/internal/attempt.h"
+#include "libquadmesh/quality/hausdorff.h"
 #include "libquadmesh/quality/size_band.h"
 
 #include <fmt/format.h>
@@ -74,6 +75,18 @@ std::size_t corner_mismatches(const QuadMeshResult& r) {
   return mismatches;
 }
 
+/// Two-sided Hausdorff distance of the quads (split along 0-2) from S, relative to
+/// S's bounding-box diagonal.
+double relative_hausdorff(const QuadMeshResult& r) {
+  std::vector<Triangle> halves;
+  for (const auto& q : r.quads.quads) {
+    halves.push_back({q[0], q[1], q[2]});
+    halves.push_back({q[0], q[2], q[3]});
+  }
+  const double diagonal = bounding_box_diagonal(r.surface.points, r.surface.triangles);
+  return two_sided_hausdorff(r.quads.points, halves, r.surface.points, r.surface.triangles).value() / diagonal;
+}
+
 double band_share(const QuadMeshResult& r) {
   if (r.quads.quads.empty() || !(r.size_requested > 0)) return 0.0;
   return quad_size_band(polygon_mesh(r.quads), r.size_requested).share_in_band;
@@ -81,31 +94,39 @@ double band_share(const QuadMeshResult& r) {
 
 }  // namespace
 
-void try_cones_if_off_band(const FormSetup& setup, const QuadMeshOptions& options, SurfaceTopology input,
-                           Stages& stages, Candidate& best) {
-  if (options.singularities != Singularities::automatic) return;
+ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOptions& options, SurfaceTopology input,
+                                       Stages& stages, Candidate& best) {
+  ConeRouteOutcome outcome;
+  if (options.singularities != Singularities::automatic) return outcome;
   const double abel_band = best.quality.has_quads ? band_share(best.result) : 0.0;
-  best.result.abel_size_band_share = abel_band;
+  outcome.abel_size_band_share = abel_band;
   const std::size_t abel_corners = best.quality.has_quads ? corner_mismatches(best.result) : 0;
-  if (abel_band >= size_band_goal && abel_corners == 0) return;
-  std::string failure;
+  if (abel_band >= size_band_goal && abel_corners == 0) return outcome;
   try {
     Candidate cones = cone_attempt(setup, stages);
     const double cones_band = band_share(cones.result);
     const std::size_t cones_corners = corner_mismatches(cones.result);
-    if (cones_replace(cones.quality, cones_band, abel_band, cones_corners, abel_corners, input, options.acceptance)) {
-      cones.result.abel_size_band_share = abel_band;
-      best = std::move(cones);
-      return;
+    if (!cones_replace(cones.quality, cones_band, abel_band, cones_corners, abel_corners, input, options.acceptance)) {
+      outcome.failure = fmt::format(
+          "its quads were not better (sound: {}; {:.0f}% in the size band against {:.0f}%; {} corners with the wrong "
+          "quad count against {})",
+          sound(cones.quality, input, options.acceptance) ? "yes" : "no", 100 * cones_band, 100 * abel_band,
+          cones_corners, abel_corners);
+      return outcome;
     }
-    failure = fmt::format("its quads were not better (sound: {}; {:.0f}% in the size band against {:.0f}%; {} "
-                          "corners with the wrong quad count against {})",
-                          sound(cones.quality, input, options.acceptance) ? "yes" : "no", 100 * cones_band,
-                          100 * abel_band, cones_corners, abel_corners);
+    // nor farther from S than the criterion allows (the Abel quads are refined
+    // where they deviate, the cones' not yet)
+    const double distance = relative_hausdorff(cones.result);
+    if (distance > options.acceptance.max_hausdorff_relative) {
+      outcome.failure = fmt::format("its quads are {:.2g}% of the diagonal from the surface (at most {:.2g}% allowed)",
+                                    100 * distance, 100 * options.acceptance.max_hausdorff_relative);
+      return outcome;
+    }
+    best = std::move(cones);
   } catch (const Error& e) {
-    failure = e.what();
+    outcome.failure = e.what();
   }
-  best.result.cone_route_failure = failure;
+  return outcome;
 }
 
 }  // namespace qm

@@ -8,6 +8,9 @@
 #include "libquadmesh/pipeline/internal/form_setup.h"
 #include "libquadmesh/pipeline/internal/stages.h"
 
+#include <limits>
+#include <string>
+
 namespace qm {
 
 /// The share of quads within [0.5, 2] x the size below which `auto` tries cones.
@@ -33,9 +36,15 @@ bool cones_replace(const CandidateQuality& cones, double cones_band, double abel
 /// Singularities::automatic: when `best` (the Abel result) has fewer than
 /// size_band_goal of its quads in the size band, or none, or a CAD corner with
 /// another quad count than one per 90 degrees, meshes by the cone route
-/// and keeps what cones_replace says; records both shares and, when the Abel
-/// result stays, why (QuadMeshResult::cone_route_failure). Nothing for abel.
-void try_cones_if_off_band(const FormSetup& setup, const QuadMeshOptions& options, SurfaceTopology input,
-                           Stages& stages, Candidate& best);
+/// and keeps what cones_replace says, if its quads are also within the acceptance's
+/// Hausdorff distance of S (the cone route has no size adaptivity yet); records both
+/// shares and, when the Abel result stays, why (for QuadMeshResult::abel_size_band_share
+/// and cone_route_failure, set on the final result). Nothing for abel.
+struct ConeRouteOutcome {
+  double abel_size_band_share = std::numeric_limits<double>::quiet_NaN();  ///< NaN: not measured
+  std::string failure;  ///< why the cone route was tried and not kept (empty otherwise)
+};
+ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOptions& options, SurfaceTopology input,
+                                       Stages& stages, Candidate& best);
 
 }  // namespace qm
