@@ -17,7 +17,6 @@ namespace qm {
 
 namespace {
 
-constexpr double quarter_turn = M_PI / 2;
 /// Sweeps over the cones when moving them to align the loops.
 constexpr int max_alignment_passes = 8;
 /// Sum of the loops' turns (radians) below which the cones stay where they are.

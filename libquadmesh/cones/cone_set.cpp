@@ -10,7 +10,6 @@
 namespace qm {
 
 namespace {
-constexpr double quarter_turn = M_PI / 2;
 /// More quads than this at one vertex is no cone a quad mesher wants.
 constexpr int max_cone_quads = 8;
 }  // namespace

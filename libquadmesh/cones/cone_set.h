@@ -11,9 +11,13 @@
 
 #include "libquadmesh/param/internal/surface_adjacency.h"
 
+#include <cmath>
 #include <vector>
 
 namespace qm {
+
+/// The angle of a quad's corner, the unit of every cone (radians).
+constexpr double quarter_turn = M_PI / 2;
 
 /// One prescribed cone: `quads` is the number of quads the vertex will be in.
 struct Cone {

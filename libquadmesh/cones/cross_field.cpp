@@ -1,6 +1,7 @@
 #include "libquadmesh/cones/cross_field.h"
 
 #include "libquadmesh/cones/cone_metric.h"
+#include "libquadmesh/cones/cone_set.h"
 #include "libquadmesh/cones/internal/face_geometry.h"
 #include "libquadmesh/cones/loop_alignment.h"
 #include "libquadmesh/core/error.h"
@@ -13,7 +14,6 @@ namespace qm {
 
 namespace {
 
-constexpr double quarter_turn = M_PI / 2;
 /// A frame within this of a whole quarter turn (radians) counts as aligned.
 constexpr double alignment_tolerance = 1e-6;
 
