@@ -1,5 +1,7 @@
 #include "libquadmesh/cones/cone_placement.h"
 
+#include <fmt/format.h>
+
 #include "libquadmesh/cones/cone_map.h"
 #include "libquadmesh/cones/cone_metric.h"
 #include "libquadmesh/cones/cross_field.h"
@@ -185,6 +187,14 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
     if (!adjacency.boundary_vertex[v]) interior_area += area[v];
   const int step = deficit > 0 ? 1 : -1;  // valence 3 (+1 quarter turn) or 5 (-1)
   std::vector<char> taken(soup.points.size(), 0);
+  // vertices nearer than cone_spacing quads to a placed interior cone are taken
+  // too: two cones closer than that compete for the same lattice cells
+  const double spacing = options.cone_spacing * size;
+  const auto take_around = [&](int cone) {
+    const Vec3& at = soup.points[static_cast<std::size_t>(cone)];
+    for (std::size_t v = 0; v < soup.points.size(); ++v)
+      if ((soup.points[v] - at).squaredNorm() < spacing * spacing) taken[v] = 1;
+  };
   const bool several_loops = adjacency.boundary_loops.size() > 1;
   const LoopTurns model = several_loops ? loop_turns(soup, adjacency, solver) : LoopTurns{};
   while (deficit != 0) {
@@ -196,8 +206,10 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
       if (eligible[v] && !taken[v] && (extreme < 0 || step * u[static_cast<Eigen::Index>(v)] < step * u[extreme]))
         extreme = static_cast<int>(v);
     if (extreme < 0)
-      throw Error(ErrorCode::unsupported, "no inner vertex is " + std::to_string(options.boundary_distance) +
-                                              " quads from the boundary to take a cone");
+      throw Error(ErrorCode::unsupported,
+                  fmt::format("no inner vertex is {:g} quads from the boundary and {:g} from the other cones to take "
+                              "a cone ({} of {} placed)",
+                              options.boundary_distance, options.cone_spacing, cones.size(), cones.size() + std::abs(deficit)));
     int best = extreme;
     if (several_loops) {
       // among the vertices nearly as extreme, the one after which the field meets
@@ -222,6 +234,7 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
     }
     cones.push_back({best, 4 - step});
     taken[static_cast<std::size_t>(best)] = 1;
+    take_around(best);
     deficit -= step;
   }
   if (several_loops)

@@ -29,6 +29,9 @@ struct ConePlacementOptions {
   /// Interior cones keep this far from the boundary (in quads of the target size):
   /// nearer, the cone and the boundary line compete for the same lattice row.
   double boundary_distance = 2.0;
+  /// Interior cones keep this far from each other (in quads of the target size,
+  /// straight-line distance): two nearer cones fold the map between them.
+  double cone_spacing = 2.5;
   /// With several boundary loops, each cone goes, among the vertices whose u is
   /// within this of the extreme, where the field meets the loops best.
   double extreme_tolerance = 0.15;

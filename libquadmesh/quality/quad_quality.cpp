@@ -2,7 +2,9 @@
 
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/core/internal/union_find.h"
+#include "libquadmesh/quality/corner_quads.h"
 #include "libquadmesh/quality/hausdorff.h"
+#include "libquadmesh/quality/size_band.h"
 
 #include <Eigen/Geometry>
 
@@ -478,9 +480,31 @@ void measure_hausdorff(const PolygonMesh& mesh, const TriangleSoup* reference, Q
   }
 }
 
+/// Quad sizes against the target (NaN without one).
+void measure_size_band(const PolygonMesh& mesh, double target_size, QuadQuality& q) {
+  q.size_band_share = q.size_ratio_max = q.size_ratio_min = kNaN;
+  if (!(target_size > 0)) return;
+  const SizeBand band = quad_size_band(mesh, target_size);
+  q.size_band_share = band.share_in_band;
+  q.size_ratio_max = band.max_ratio;
+  q.size_ratio_min = band.min_ratio;
+}
+
+/// The reference's corners and the quads at each.
+void measure_corners(const PolygonMesh& mesh, const TriangleSoup* reference, QuadQuality& q) {
+  if (!reference) return;
+  const CornerQuads c = corner_quads(mesh, *reference);
+  q.corners_convex = c.convex;
+  q.corners_convex_wrong = c.convex_wrong;
+  q.corners_concave = c.concave;
+  q.corners_concave_wrong = c.concave_wrong;
+  q.corners_other = c.other;
+  q.corners_other_wrong = c.other_wrong;
+}
+
 }  // namespace
 
-QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference) {
+QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference, double target_size) {
   QuadQuality q;
   const std::vector<int> first_corner = count_faces(mesh, q);
   measure_quad_shapes(mesh, q);
@@ -489,6 +513,8 @@ QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference)
   measure_valences(mesh, connectivity, q);
   measure_edges(mesh, connectivity, q);
   measure_hausdorff(mesh, reference, q);
+  measure_size_band(mesh, target_size, q);
+  measure_corners(mesh, reference, q);
   return q;
 }
 

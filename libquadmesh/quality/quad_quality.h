@@ -99,6 +99,21 @@ struct QuadQuality {
   double boundary_alignment_mean = 0;  ///< mean |angle(edge, boundary tangent) - 90|
   double boundary_alignment_max = 0;   ///< largest |angle(edge, boundary tangent) - 90|
 
+  // quad size (mean edge length of the quad) against the target size (size_band.h;
+  // NaN without a target)
+  double size_band_share = 0;  ///< share of the quads within [0.5, 2] x the target
+  double size_ratio_max = 0;   ///< largest quad size / target
+  double size_ratio_min = 0;   ///< smallest quad size / target
+
+  // the reference's corners and the quads at each (corner_quads.h; 0 without a
+  // reference)
+  std::size_t corners_convex = 0;         ///< corners of 60-120 degrees
+  std::size_t corners_convex_wrong = 0;   ///< of those, not in exactly one quad
+  std::size_t corners_concave = 0;        ///< corners of 240-300 degrees
+  std::size_t corners_concave_wrong = 0;  ///< of those, not in exactly three quads
+  std::size_t corners_other = 0;          ///< other corners (more than 45 degrees from straight)
+  std::size_t corners_other_wrong = 0;    ///< of those, not in max(1, round(angle / 90 deg)) quads
+
   // two-sided Hausdorff distance to the reference, relative to its bounding-box
   // diagonal (NaN without a reference)
   double hausdorff_rel = 0;           ///< max(forward, backward) / diagonal
@@ -135,8 +150,10 @@ std::vector<double> sound_scaled_jacobians(const PolygonMesh& mesh);
 /// Measures `mesh` (faces CCW seen from the front; degenerate faces are measured,
 /// not rejected) and, when `reference` is not null, its two-sided Hausdorff
 /// distance to that triangulated surface (hausdorff.h; quads split along 0-2).
+/// With `target_size` > 0 the quad sizes are set against it (size_band.h), and
+/// with a reference its corners are checked (corner_quads.h).
 /// Every field is documented in QuadQuality.
-QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference);
+QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference, double target_size = 0);
 
 /// The area-weighted vertex normals of a polygon mesh: the normalized sum of the
 /// vector areas of the faces around each point (zero for isolated points or where

@@ -262,6 +262,14 @@ TEST_CASE("placed cones on a plate with two holes: one quad per corner, eight va
   }
   CHECK(corners == 4);
   CHECK(fives == 8);
+  // interior cones at least cone_spacing quads apart (before the loop alignment
+  // moves them by a few edges, which keeps cone_separation edges between them)
+  const double spacing = ConePlacementOptions{}.cone_spacing * 1.75;
+  for (const Cone& a : cones)
+    for (const Cone& b : cones)
+      if (a.vertex < b.vertex && a.quads == 5 && b.quads == 5)
+        CHECK((soup.points[static_cast<std::size_t>(a.vertex)] - soup.points[static_cast<std::size_t>(b.vertex)])
+                  .norm() > 0.6 * spacing);
   const ConeMap m = cone_map(soup, adjacency, cones, 1.75);
   // the cones were placed so that the field meets both holes at whole quarter turns
   for (double r : m.field.loop_rotation) CHECK(std::abs(r) < 1.0 * M_PI / 180);
@@ -273,6 +281,37 @@ TEST_CASE("placed cones on a plate with two holes: one quad per corner, eight va
   const LatticeQuads q = complete_quads(soup, adjacency, m.map);
   // 6000 - 2 pi 100 = 5372 of area at 1.75: about 1754 quads
   CHECK(std::abs(static_cast<double>(q.quads.size()) - 1754) < 0.05 * 1754);
+  CHECK(euler_and_singular(q) == std::pair{-1, 8});
+  check_cone_quads(q, cones);
+}
+
+TEST_CASE("a T-plate: cones placed farther from the boundary and apart map without folds, corners right" *
+          doctest::test_suite("slow")) {
+  // examples/t-plate-two-holes.geo: six convex and two concave corners, chi = -1:
+  // eight valence-5 cones. With the default placement two of them sit between the
+  // left hole and the plate's edge and the map folds there; the route's second
+  // placement (cone_route.h cone_placements) keeps them 2.5 quads from the boundary.
+  io::ReadOptions read;
+  read.quad_size = 2.343;
+  const TriangleSoup soup = io::read_surface(test::example("t-plate-two-holes.geo"), read).soup;
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  ConePlacementOptions wider;
+  wider.boundary_distance = 2.5;
+  wider.cone_spacing = 3.0;
+  const std::vector<Cone> cones = place_cones(soup, adjacency, 2.343, wider);
+  int convex = 0, concave = 0, fives = 0;
+  for (const Cone& c : cones) {
+    const bool boundary = adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)];
+    convex += boundary && c.quads == 1;
+    concave += boundary && c.quads == 3;
+    fives += !boundary && c.quads == 5;
+  }
+  CHECK(convex == 6);
+  CHECK(concave == 2);
+  CHECK(fives == 8);
+  const ConeMap m = cone_map(soup, adjacency, cones, 2.343);
+  CHECK(m.report.inverted_triangles == 0);
+  const LatticeQuads q = complete_quads(soup, adjacency, m.map);
   CHECK(euler_and_singular(q) == std::pair{-1, 8});
   check_cone_quads(q, cones);
 }

@@ -420,6 +420,24 @@ TEST_CASE("quality --json: counts and scaled Jacobian of a quad grid; a missing 
   CHECK(j["euler_characteristic"] == 1);
   CHECK(j["boundary_loops"] == 1);
   CHECK(j["hausdorff_rel"].is_null());  // no reference
+  CHECK(j["size_band_share"].is_null());  // no --size
+
+  // against a target size: the unit squares are 2.5 x 0.4 and 1/1.5 x 1.5
+  const Run small = quadmesh("quality " + quoted(dir + "/grid.obj") + " --json --size 0.4");
+  REQUIRE(small.status == 0);
+  const auto s = nlohmann::json::parse(small.out);
+  CHECK(s["size_band_share"].get<double>() == 0.0);
+  CHECK(s["size_ratio_max"].get<double>() == doctest::Approx(2.5).epsilon(1e-12));
+  const Run fits = quadmesh("quality " + quoted(dir + "/grid.obj") + " --size 1.5");
+  CHECK(fits.out.find("100.0% of the quads within [0.5, 2] x 1.5") != std::string::npos);
+  // the grid as its own reference: its four corners are each in one quad
+  const Run corners = quadmesh("quality " + quoted(dir + "/grid.obj") + " --json --reference " + quoted(dir + "/grid.obj"));
+  REQUIRE(corners.status == 0);
+  const auto c = nlohmann::json::parse(corners.out)["corners"];
+  CHECK(c["convex"] == 4);
+  CHECK(c["convex_wrong"] == 0);
+  CHECK(c["concave"] == 0);
+  CHECK(quadmesh("quality " + quoted(dir + "/grid.obj") + " --size -1").status == 2);
 
   const Run missing = quadmesh("quality " + quoted(dir + "/missing.obj"));
   CHECK(missing.status == 3);
@@ -492,8 +510,40 @@ TEST_CASE("mesh --singularities auto: a plate whose corners get two quads each f
   CHECK(q["irregular_interior"] == 8);
   CHECK(q["irregular_interior"] == j["expected"]["irregular_interior"]);
   CHECK(q["irregular_boundary"] == 0);  // every corner in one quad, every other boundary point in two
+  CHECK(q["corners"]["convex"] == 4);   // the plate's corners, taken from the input
+  CHECK(q["corners"]["convex_wrong"] == 0);
+  CHECK(q["size_band_share"].get<double>() == doctest::Approx(s["size_band_share"].get<double>()).epsilon(1e-12));
+  CHECK(q["size_ratio_max"].get<double>() <= 3.0);
   const auto& criteria = j["acceptance"];
   CHECK(q["min_scaled_jacobian"].get<double>() >= criteria["min_scaled_jacobian"].get<double>());
   CHECK(q["angle_dev_mean"].get<double>() <= criteria["max_mean_angle_deviation_deg"].get<double>());
   CHECK(q["hausdorff_rel"].get<double>() <= criteria["max_hausdorff_relative"].get<double>());
+}
+
+TEST_CASE("mesh --singularities auto: a T-plate the Abel route folds meshes with cones, every corner right" *
+          doctest::test_suite("slow")) {
+  const std::string dir = test::scratch_dir("cli_singularities_t");
+  const std::string output = dir + "/out.msh", report = dir + "/report.json";
+  const Run abel = quadmesh("mesh " + quoted(test::example("t-plate-two-holes.geo")) + " -o " + quoted(output) +
+                            " --size 1.5% -q");
+  CHECK(abel.status == 1);  // the web is a long end: the Abel quads fold there
+  const Run run = quadmesh("mesh " + quoted(test::example("t-plate-two-holes.geo")) + " -o " + quoted(output) +
+                           " --size 1.5% --singularities auto -q --report " + quoted(report));
+  REQUIRE(run.status == 0);
+  const auto j = nlohmann::json::parse(slurp(report));
+  CHECK(j["singularities"]["route"] == "cones");
+  const auto& q = j["quality"];
+  CHECK(q["euler_characteristic"] == -1);
+  CHECK(q["boundary_loops"] == 3);
+  CHECK(q["triangles"] == 0);
+  CHECK(q["inverted"] == 0);
+  CHECK(q["corners"]["convex"] == 6);
+  CHECK(q["corners"]["convex_wrong"] == 0);
+  CHECK(q["corners"]["concave"] == 2);
+  CHECK(q["corners"]["concave_wrong"] == 0);
+  CHECK(q["irregular_interior"] == 8);
+  CHECK(q["min_scaled_jacobian"].get<double>() >= 0.3);
+  CHECK(q["angle_dev_mean"].get<double>() <= 5.0);
+  CHECK(q["hausdorff_rel"].get<double>() <= 0.01);
+  CHECK(q["size_band_share"].get<double>() >= 0.85);
 }

@@ -66,6 +66,12 @@ Json quality_json(const QuadQuality& q) {
   j["edge_length_max"] = number(q.edge_length_max);
   j["boundary_alignment_mean"] = number(q.boundary_alignment_mean);
   j["boundary_alignment_max"] = number(q.boundary_alignment_max);
+  j["size_band_share"] = number(q.size_band_share);
+  j["size_ratio_max"] = number(q.size_ratio_max);
+  j["size_ratio_min"] = number(q.size_ratio_min);
+  j["corners"] = {{"convex", q.corners_convex},   {"convex_wrong", q.corners_convex_wrong},
+                  {"concave", q.corners_concave}, {"concave_wrong", q.corners_concave_wrong},
+                  {"other", q.corners_other},     {"other_wrong", q.corners_other_wrong}};
   j["hausdorff_rel"] = number(q.hausdorff_rel);
   j["hausdorff_forward_rel"] = number(q.hausdorff_forward_rel);
   j["hausdorff_backward_rel"] = number(q.hausdorff_backward_rel);

@@ -63,6 +63,14 @@ const std::vector<Metric>& metrics() {
        [](const QuadQuality& q) { return static_cast<double>(q.euler_characteristic); }, false},
       {"Hausdorff", "Hausdorff distance", Better::lower, "{:.2e}",
        [](const QuadQuality& q) { return q.hausdorff_rel; }},
+      {"in size band", "share of the quads within [0.5, 2] x the size", Better::higher, "{:.3f}",
+       [](const QuadQuality& q) { return q.size_band_share; }, false},
+      {"max size", "largest quad size / the size", Better::lower, "{:.2f}",
+       [](const QuadQuality& q) { return q.size_ratio_max; }, false},
+      {"corners wrong", "corners not in max(1, round(angle / 90 deg)) quads", Better::lower, "{:.0f}",
+       [](const QuadQuality& q) {
+         return static_cast<double>(q.corners_convex_wrong + q.corners_concave_wrong + q.corners_other_wrong);
+       }, false},
   };
   return all;
 }
@@ -345,8 +353,10 @@ std::string report_markdown(const ComparisonReport& r) {
       "Angle deviation: |corner angle - 90| in degrees over all quad corners. "
       "Edge mean: mean edge length, to set against the target size. "
       "Irregular vertices: interior vertices with valence other than 4. Hausdorff: two-sided "
-      "distance to the input triangulation / its bounding-box diagonal. Triangles are counted, "
-      "not measured.\n\n";
+      "distance to the input triangulation / its bounding-box diagonal. In size band: share of "
+      "the quads whose mean edge is within [0.5, 2] x the target size; max size: the largest such ratio. "
+      "Corners wrong: the input's corners (more than 45 degrees from straight) not in max(1, round(angle / "
+      "90 deg)) quads. Triangles are counted, not measured.\n\n";
   md += fmt::format("**Verdict.** {}\n\n", report_verdict(r));
   md += pictures_markdown(r);
   md += fmt::format("![Angle deviation of every method]({})\n\n", kAngleHistogramFile);

@@ -115,8 +115,9 @@ PictureSetup picture_setup(const TriangleSoup& reference) {
   return setup;
 }
 
-/// Runs one method in its child process and measures and draws its mesh.
-MethodRun run_method(const Method& method, const fs::path& dir, const TriangleSoup& reference,
+/// Runs one method in its child process and measures (quad sizes against `size`)
+/// and draws its mesh.
+MethodRun run_method(const Method& method, const fs::path& dir, const TriangleSoup& reference, double size,
                      double timeout, const PictureSetup& drawing) {
   MethodRun run;
   run.method = method;
@@ -142,7 +143,7 @@ MethodRun run_method(const Method& method, const fs::path& dir, const TriangleSo
 
   try {
     const PolygonMesh mesh = io::read_polygon_mesh((dir / method.mesh_file).string());
-    run.quality = quad_quality(mesh, &reference);
+    run.quality = quad_quality(mesh, &reference, size);
     run.samples = quad_shape_samples(mesh);
     MeshPictureOptions options = drawing.options;
     options.title = method.name;
@@ -269,7 +270,7 @@ int run_compare(const CompareOptions& options, const CommonOptions& common) {
       continue;
     }
     progress.stage(fmt::format("running {} (limit {:g} s)", method.name, options.timeout));
-    report.runs.push_back(run_method(method, dir, reference, options.timeout, drawing));
+    report.runs.push_back(run_method(method, dir, reference, size, options.timeout, drawing));
     const MethodRun& run = report.runs.back();
     progress.stage(fmt::format("{}: {} after {:.2f} s{}", method.name, status_name(run.status),
                                run.seconds, run.detail.empty() ? "" : ": " + run.detail));

@@ -145,13 +145,15 @@ void require_conforming(const MeshSummary& s, const QuadMeshResult& r) {
     cause = fmt::format("; quad edges reach {:.0f} times --size near ({:.6g}, {:.6g}, {:.6g}): the differential is "
                         "small there (a long end or a protrusion), a limit of the method (README Limits)",
                         longest.length / r.size_requested, longest.at.x(), longest.at.y(), longest.at.z());
+  const std::string cones =
+      r.cone_route_failure.empty() ? std::string() : "; quarter-turn cones did not help: " + r.cone_route_failure;
   throw Error(ErrorCode::solver,
               fmt::format("the quad mesh would not be conforming (chi {} and {} boundary loops, the input has {} "
-                          "and {}): {} folded triangles and {} incomplete cells are left{}{}; no output was written; "
+                          "and {}): {} folded triangles and {} incomplete cells are left{}{}{}; no output was written; "
                           "try another --size or --form",
                           q.euler_characteristic, q.boundary_loops, s.input_euler_characteristic,
                           s.input_boundary_loops, r.extraction.bad_triangles, r.extraction.incomplete_cells, where,
-                          cause));
+                          cause, cones));
 }
 
 /// Lattice cells the extraction could not make into quads leave gaps in the mesh

@@ -2,6 +2,7 @@
 // method.md section 10 for any triangle/quad mesh file.
 #include "io/read_polygon_mesh.h"
 #include "io/read_surface.h"
+#include "libquadmesh/quality/hausdorff.h"
 #include "libquadmesh/quality/quad_quality.h"
 #include "libquadmesh/topology/applicability.h"
 #include "tools/common/exit_codes.h"
@@ -12,6 +13,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -34,7 +36,16 @@ std::string histogram(const std::map<int, std::size_t>& counts) {
   return fmt::format("{}", fmt::join(items, ", "));
 }
 
-std::string quality_text(const QuadQuality& q, bool with_reference) {
+/// "4 convex (0 wrong), 2 concave (1 wrong), 0 other": the reference's corners and
+/// those not in max(1, round(angle / 90 deg)) quads.
+std::string corners_text(const QuadQuality& q) {
+  return fmt::format("{} convex of 60-120 deg ({} not in one quad), {} concave of 240-300 deg ({} not in three), "
+                     "{} other ({} wrong)",
+                     q.corners_convex, q.corners_convex_wrong, q.corners_concave, q.corners_concave_wrong,
+                     q.corners_other, q.corners_other_wrong);
+}
+
+std::string quality_text(const QuadQuality& q, bool with_reference, double target_size) {
   std::string out;
   auto line = [&out](const char* key, const std::string& text) {
     out += fmt::format("{:<20}{}\n", key, text);
@@ -65,12 +76,34 @@ std::string quality_text(const QuadQuality& q, bool with_reference) {
   line("topology", fmt::format("chi {}, {} boundary loops{}{}", q.euler_characteristic,
                                q.boundary_loops, q.manifold ? "" : ", NOT manifold",
                                q.consistently_oriented ? "" : ", NOT consistently oriented"));
-  if (with_reference)
+  if (target_size > 0)
+    line("size", fmt::format("{} of the quads within [0.5, 2] x {:.4g}, largest {} x, smallest {} x",
+                             std::isnan(q.size_band_share) ? std::string("n/a")
+                                                           : fmt::format("{:.1f}%", 100 * q.size_band_share),
+                             target_size, value(q.size_ratio_max, "{:.2f}"), value(q.size_ratio_min, "{:.2f}")));
+  if (with_reference) {
+    line("corners", corners_text(q));
     line("Hausdorff distance",
          fmt::format("{} of the diagonal (mesh to reference {}, reference to mesh {})",
                      value(q.hausdorff_rel, "{:.3g}"), value(q.hausdorff_forward_rel, "{:.3g}"),
                      value(q.hausdorff_backward_rel, "{:.3g}")));
+  }
   return out;
+}
+
+/// The target size: --size, or P% of the bounding-box diagonal of the reference
+/// (else of the mesh); 0 without --size.
+double target_size(const QualityOptions& options, const PolygonMesh& mesh, const io::SurfaceFile* reference) {
+  if (options.size > 0) return options.size;
+  if (!(options.size_relative > 0)) return 0;
+  if (reference) return options.size_relative * bounding_box_diagonal(reference->soup.points, reference->soup.triangles);
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const std::vector<int>& face : mesh.faces)
+    for (int v : face) {
+      lo = lo.cwiseMin(mesh.points[static_cast<std::size_t>(v)]);
+      hi = hi.cwiseMax(mesh.points[static_cast<std::size_t>(v)]);
+    }
+  return mesh.faces.empty() ? 0 : options.size_relative * (hi - lo).norm();
 }
 
 /// What `quadmesh info` refuses as invalid data (non-finite coordinates, a face
@@ -102,11 +135,12 @@ int run_quality(const QualityOptions& options, const CommonOptions& common) {
     reference = io::read_surface(options.reference, read);
   }
   progress.stage("measuring quality");
-  const QuadQuality q = quad_quality(mesh, with_reference ? &reference.soup : nullptr);
+  const double target = target_size(options, mesh, with_reference ? &reference : nullptr);
+  const QuadQuality q = quad_quality(mesh, with_reference ? &reference.soup : nullptr, target);
   if (options.json)
     fmt::print("{}\n", quality_json(q).dump(2));
   else
-    fmt::print("{}", quality_text(q, with_reference));
+    fmt::print("{}", quality_text(q, with_reference, target));
   return exit_ok;
 }
 

@@ -54,6 +54,8 @@ struct FormsOptions {
 struct QualityOptions {
   std::string input;
   std::string reference;  ///< --reference: triangulated surface for the Hausdorff distance, or empty
+  double size = 0.0;           ///< --size H: the target quad size the sizes are set against; 0: none
+  double size_relative = 0.0;  ///< --size P%: P/100 of the bounding-box diagonal (the reference's, else the mesh's)
   bool json = false;
 };
 

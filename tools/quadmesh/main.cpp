@@ -190,6 +190,11 @@ int run(int argc, char** argv) {
   quality_cmd->add_option("MESH", quality.input, "Mesh to measure (triangles and quads)")->required();
   quality_cmd->add_option("--reference", quality.reference,
                           "Input surface for the two-sided Hausdorff distance");
+  std::string quality_size;
+  checked(quality_cmd->add_option("--size", quality_size,
+                                  "Target quad size the quad sizes are set against, or P% of the bounding-box "
+                                  "diagonal (the reference's, else the mesh's)"),
+          length_or_percent());
   quality_cmd->add_flag("--json", quality.json, "Print one JSON object instead of text");
 
   CompareOptions compare;
@@ -258,7 +263,10 @@ int run(int argc, char** argv) {
   sandbox.allow_geo_commands = common.allow_geo_commands;
   if (info_cmd->parsed()) return run_info(info, common);
   if (forms_cmd->parsed()) return run_forms(forms, common);
-  if (quality_cmd->parsed()) return run_quality(quality, common);
+  if (quality_cmd->parsed()) {
+    set_length_or_percent(quality_size, quality.size, quality.size_relative);
+    return run_quality(quality, common);
+  }
   if (compare_cmd->parsed()) {
     set_length_or_percent(compare_size, compare.size, compare.size_relative);
     return run_compare(compare, common);

@@ -97,7 +97,7 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
   s.input = options.input;
   const std::vector<char> on_boundary =
       result.cones.empty() ? std::vector<char>() : surface_adjacency(result.surface).boundary_vertex;
-  s.quality = quad_quality(polygon_mesh(result.quads), &in.surface.soup);
+  s.quality = quad_quality(polygon_mesh(result.quads), &in.surface.soup, result.size_requested);
   for (const ZeroVertex& z : result.zero_vertices)
     if (!z.corner) (z.on_boundary ? s.expected_irregular_boundary : s.expected_irregular_interior)++;
   for (const Cone& c : result.cones)  // the cone route: its interior cones are the irregular vertices
@@ -233,6 +233,10 @@ void print_summary(const MeshSummary& s) {
   fmt::print("topology            chi {} (input {}), {} boundary loops (input {})\n", q.euler_characteristic,
              s.input_euler_characteristic, q.boundary_loops, s.input_boundary_loops);
   fmt::print("Hausdorff distance  {:.3g} of the diagonal\n", q.hausdorff_rel);
+  if (q.corners_convex + q.corners_concave + q.corners_other > 0)
+    fmt::print("corners             {} convex ({} not in one quad), {} concave ({} not in three), {} other ({} wrong)\n",
+               q.corners_convex, q.corners_convex_wrong, q.corners_concave, q.corners_concave_wrong, q.corners_other,
+               q.corners_other_wrong);
   const Json& sg = s.report["singularities"];
   if (sg["size_band_share"].is_number())
     fmt::print("size                {:.0f}% of the quads within [0.5, 2] x the size ({} route{})\n",

@@ -9,16 +9,33 @@
 #include "libquadmesh/quality/size_band.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <string>
+#include <vector>
 
 namespace qm {
 
-Candidate cone_attempt(const FormSetup& setup, Stages& stages) {
+std::vector<ConePlacementOptions> cone_placements() {
+  ConePlacementOptions wider;
+  wider.boundary_distance = 2.5;
+  wider.cone_spacing = 3.0;
+  ConePlacementOptions widest;
+  widest.boundary_distance = 3.0;
+  widest.cone_spacing = 3.5;
+  return {ConePlacementOptions{}, wider, widest};
+}
+
+Candidate cone_attempt(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages) {
   QuadMeshResult r = setup.preamble;
   const TriangleSoup& soup = setup.soup;
   const double size = setup.preamble.size_requested;
   const SurfaceAdjacency adjacency = surface_adjacency(soup);
-  stages.next("cone_placement", "placing quarter-turn cones (corners, then the interior)");
-  r.cones = place_cones(soup, adjacency, size);
+  stages.next("cone_placement",
+              fmt::format("placing quarter-turn cones (corners, then the interior, {:g} quads from the boundary and "
+                          "{:g} apart)",
+                          placement.boundary_distance, placement.cone_spacing));
+  r.cones = place_cones(soup, adjacency, size, placement);
   int corners = 0;
   for (const Cone& c : r.cones) corners += adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)];
   stages.next("cone_map", fmt::format("the seamless map with {} corner and {} interior cones", corners,
@@ -42,6 +59,20 @@ Candidate cone_attempt(const FormSetup& setup, Stages& stages) {
 bool sound(const CandidateQuality& c, SurfaceTopology input, const AcceptanceCriteria& criteria) {
   const Shortcomings s = shortcomings(c, input, criteria);
   return c.has_quads && s.wrong_topology == 0 && s.inverted_or_flipped == 0 && s.dropped_or_stray == 0;
+}
+
+std::string unsound_reason(const CandidateQuality& c, SurfaceTopology input) {
+  if (!c.has_quads) return "no quads";
+  std::vector<std::string> parts;
+  if (c.topology.euler_characteristic != input.euler_characteristic || c.topology.boundary_loops != input.boundary_loops)
+    parts.push_back(fmt::format("chi {} and {} boundary loops against {} and {}", c.topology.euler_characteristic,
+                                c.topology.boundary_loops, input.euler_characteristic, input.boundary_loops));
+  if (c.inverted + c.flipped > 0) parts.push_back(fmt::format("{} inverted or flipped quads", c.inverted + c.flipped));
+  if (c.folds_left > 0) parts.push_back(fmt::format("{} folded triangles", c.folds_left));
+  if (c.dropped_cells > 0) parts.push_back(fmt::format("{} dropped cells", c.dropped_cells));
+  if (c.stray_boundary_points > 0)
+    parts.push_back(fmt::format("{} quad points off the boundary", c.stray_boundary_points));
+  return fmt::format("{}", fmt::join(parts, ", "));
 }
 
 bool cones_replace(const CandidateQuality& cones, double cones_band, double abel_band, std::size_t cones_corners,
@@ -103,15 +134,27 @@ ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOpt
   const std::size_t abel_corners = best.quality.has_quads ? corner_mismatches(best.result) : 0;
   if (abel_band >= size_band_goal && abel_corners == 0) return outcome;
   try {
-    Candidate cones = cone_attempt(setup, stages);
+    // the placements in turn, until one gives sound quads (cramped cones fold the map)
+    Candidate cones;
+    std::string placement_failure;
+    for (const ConePlacementOptions& placement : cone_placements()) {
+      try {
+        cones = cone_attempt(setup, placement, stages);
+      } catch (const Error& e) {
+        if (placement_failure.empty()) placement_failure = e.what();
+        continue;
+      }
+      if (sound(cones.quality, input, options.acceptance)) break;
+    }
+    if (!cones.quality.has_quads) throw Error(ErrorCode::unsupported, placement_failure);
     const double cones_band = band_share(cones.result);
     const std::size_t cones_corners = corner_mismatches(cones.result);
     if (!cones_replace(cones.quality, cones_band, abel_band, cones_corners, abel_corners, input, options.acceptance)) {
       outcome.failure = fmt::format(
-          "its quads were not better (sound: {}; {:.0f}% in the size band against {:.0f}%; {} corners with the wrong "
+          "its quads were not better ({}; {:.0f}% in the size band against {:.0f}%; {} corners with the wrong "
           "quad count against {})",
-          sound(cones.quality, input, options.acceptance) ? "yes" : "no", 100 * cones_band, 100 * abel_band,
-          cones_corners, abel_corners);
+          sound(cones.quality, input, options.acceptance) ? "sound" : "not sound: " + unsound_reason(cones.quality, input),
+          100 * cones_band, 100 * abel_band, cones_corners, abel_corners);
       return outcome;
     }
     // nor farther from S than the criterion allows (the Abel quads are refined

@@ -4,12 +4,14 @@
 // size band; kept when it is sound and keeps more quads in the band.
 #pragma once
 
+#include "libquadmesh/cones/cone_placement.h"
 #include "libquadmesh/pipeline/internal/candidate_ranking.h"
 #include "libquadmesh/pipeline/internal/form_setup.h"
 #include "libquadmesh/pipeline/internal/stages.h"
 
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace qm {
 
@@ -21,11 +23,20 @@ constexpr double size_band_goal = 0.9;
 /// extraction) measured once.
 /// Throws qm::Error when a stage cannot be done (handles whose holonomy the
 /// cones leave, a boundary loop the field cannot meet, a failed solve).
-Candidate cone_attempt(const FormSetup& setup, Stages& stages);
+Candidate cone_attempt(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages);
+
+/// The cone placements the route tries in turn, until one gives sound quads: the
+/// defaults, then interior cones farther from the boundary and from each other
+/// (cramped cones fold the map between them and the boundary).
+std::vector<ConePlacementOptions> cone_placements();
 
 /// Sound: quads with the input's topology, no inverted or flipped quad, no dropped
 /// cell, no stray boundary point.
 bool sound(const CandidateQuality& c, SurfaceTopology input, const AcceptanceCriteria& criteria);
+
+/// What makes a candidate not sound, in words ("3 inverted or flipped quads, 2
+/// dropped cells"); empty when it is sound.
+std::string unsound_reason(const CandidateQuality& c, SurfaceTopology input);
 
 /// Whether the cone candidate replaces the Abel one: sound, and more of its quads
 /// in the size band (by more than a point), or fewer corners of S whose quad count

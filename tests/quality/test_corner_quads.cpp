@@ -1,0 +1,140 @@
+// The quads at the input's corners (corner_quads.h) and the quad sizes against a
+// target (quad_quality with a target size), on meshes whose answers are known by
+// construction: a square, an L-shape, a split corner, a corner the quads miss, a
+// 30-degree corner.
+#include "libquadmesh/quality/corner_quads.h"
+#include "libquadmesh/quality/quad_quality.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <functional>
+
+using namespace qm;
+
+namespace {
+
+/// The cells (i, j) of an n x n grid of spacing h for which `keep` holds, as quads
+/// (CCW) over the grid's points.
+PolygonMesh grid_cells(int n, double h, const std::function<bool(int, int)>& keep) {
+  PolygonMesh mesh;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      mesh.points.push_back(Vec3(i * h, j * h, 0));
+  const auto id = [n](int i, int j) { return j * (n + 1) + i; };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      if (keep(i, j)) mesh.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  return mesh;
+}
+
+/// The mesh's faces as triangles (fans from the first corner): the reference.
+TriangleSoup triangles_of(const PolygonMesh& mesh) {
+  TriangleSoup soup;
+  soup.points = mesh.points;
+  for (const auto& f : mesh.faces)
+    for (std::size_t k = 1; k + 1 < f.size(); ++k) soup.triangles.push_back({f[0], f[k], f[k + 1]});
+  return soup;
+}
+
+const auto all_cells = [](int, int) { return true; };
+
+}  // namespace
+
+TEST_CASE("a square's four corners are each in one quad") {
+  const PolygonMesh quads = grid_cells(4, 0.25, all_cells);
+  const CornerQuads c = corner_quads(quads, triangles_of(grid_cells(2, 0.5, all_cells)));
+  CHECK(c.convex == 4);
+  CHECK(c.convex_wrong == 0);
+  CHECK(c.concave == 0);
+  CHECK(c.other == 0);
+  REQUIRE(c.corners.size() == 4);
+  for (const CornerCount& k : c.corners) {
+    CHECK(k.angle_deg == doctest::Approx(90).epsilon(1e-12));
+    CHECK(k.quads_wanted == 1);
+    CHECK(k.quads == 1);
+  }
+}
+
+TEST_CASE("an L-shape: five convex corners in one quad, the concave one in three") {
+  // [0,2]^2 without [1,2]^2: cells of side 1 for the reference, of side 0.5 for the quads
+  const auto l_shape = [](int cells) { return [cells](int i, int j) { return i < cells || j < cells; }; };
+  const CornerQuads c = corner_quads(grid_cells(4, 0.5, l_shape(2)), triangles_of(grid_cells(2, 1.0, l_shape(1))));
+  CHECK(c.convex == 5);
+  CHECK(c.convex_wrong == 0);
+  CHECK(c.concave == 1);
+  CHECK(c.concave_wrong == 0);
+  for (const CornerCount& k : c.corners)
+    if (k.quads_wanted == 3) {
+      CHECK(k.angle_deg == doctest::Approx(270).epsilon(1e-12));
+      CHECK(k.position.isApprox(Vec3(1, 1, 0)));
+      CHECK(k.quads == 3);
+    }
+}
+
+TEST_CASE("a corner split in two faces, or missed by the quads, is wrong") {
+  const TriangleSoup square = triangles_of(grid_cells(1, 1.0, all_cells));
+  SUBCASE("split: the corner quad cut along its diagonal from the corner") {
+    PolygonMesh quads = grid_cells(2, 0.5, all_cells);
+    const std::vector<int> corner = quads.faces.front();  // (0,0) (0.5,0) (0.5,0.5) (0,0.5)
+    quads.faces.front() = {corner[0], corner[1], corner[2]};
+    quads.faces.push_back({corner[0], corner[2], corner[3]});
+    const CornerQuads c = corner_quads(quads, square);
+    CHECK(c.convex == 4);
+    CHECK(c.convex_wrong == 1);
+  }
+  SUBCASE("missed: the quads' corner point 0.14 from the square's corner") {
+    PolygonMesh quads = grid_cells(2, 0.5, all_cells);
+    quads.points[0] = Vec3(0.1, 0.1, 0);  // its boundary edges are 0.41 long: a quarter is 0.10
+    const CornerQuads c = corner_quads(quads, square);
+    CHECK(c.convex_wrong == 1);
+    int missed = 0;
+    for (const CornerCount& k : c.corners) missed += k.quads == 0;
+    CHECK(missed == 1);
+  }
+}
+
+TEST_CASE("a 30-degree corner is another corner, wanting one quad; 135 degrees is no corner") {
+  // a triangle (0,0) (1,0) (cos 30, sin 30) fanned from its centroid: corners of 30,
+  // 75 and 75 degrees
+  const double a = M_PI / 6;
+  PolygonMesh tri;
+  tri.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(std::cos(a), std::sin(a), 0)};
+  tri.points.push_back((tri.points[0] + tri.points[1] + tri.points[2]) / 3);
+  tri.faces = {{0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
+  PolygonMesh one_face = tri;  // the whole triangle as one face: each corner in one face
+  one_face.faces = {{0, 1, 2}};
+  const CornerQuads c = corner_quads(one_face, triangles_of(tri));
+  CHECK(c.other == 1);
+  CHECK(c.convex == 2);
+  CHECK(c.other_wrong == 0);
+  CHECK(c.convex_wrong == 0);
+  const CornerQuads fan = corner_quads(tri, triangles_of(tri));  // each corner in two faces of the fan
+  CHECK(fan.other_wrong == 1);
+  CHECK(fan.convex_wrong == 2);
+  // a trapezoid (0,0) (3,0) (2,1) (1,1): 45-degree corners below (other corners), 135 degrees above (none)
+  PolygonMesh trapezoid;
+  trapezoid.points = {Vec3(0, 0, 0), Vec3(3, 0, 0), Vec3(2, 1, 0), Vec3(1, 1, 0)};
+  trapezoid.faces = {{0, 1, 2, 3}};
+  const CornerQuads t = corner_quads(trapezoid, triangles_of(trapezoid));
+  CHECK(t.corners.size() == 2);
+  CHECK(t.other == 2);
+}
+
+TEST_CASE("quad sizes against a target: the band share and the extreme ratios") {
+  const PolygonMesh quads = grid_cells(4, 0.25, all_cells);
+  const QuadQuality at_size = quad_quality(quads, nullptr, 0.25);
+  CHECK(at_size.size_band_share == 1.0);
+  CHECK(at_size.size_ratio_max == doctest::Approx(1.0).epsilon(1e-12));
+  const QuadQuality too_fine = quad_quality(quads, nullptr, 0.1);  // 2.5 x the target
+  CHECK(too_fine.size_band_share == 0.0);
+  CHECK(too_fine.size_ratio_min == doctest::Approx(2.5).epsilon(1e-12));
+  CHECK(std::isnan(quad_quality(quads, nullptr).size_band_share));
+  // with a reference the corners are counted too
+  const QuadQuality q = quad_quality(quads, nullptr, 0.25);
+  CHECK(q.corners_convex == 0);
+  const TriangleSoup square = triangles_of(grid_cells(1, 1.0, all_cells));
+  const QuadQuality r = quad_quality(quads, &square, 0.25);
+  CHECK(r.corners_convex == 4);
+  CHECK(r.corners_convex_wrong == 0);
+}
