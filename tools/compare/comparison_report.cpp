@@ -196,7 +196,8 @@ Json report_json(const ComparisonReport& r) {
       for (const char* key : {"quads", "triangles", "inverted", "min_scaled_jacobian", "mean_scaled_jacobian",
                               "min_angle", "max_angle", "min_warpage", "aspect_ratio_max", "skew_max", "taper_max",
                               "triangle_min_scaled_jacobian", "angle_dev_mean", "angle_dev_p99", "irregular_vertices", "boundary_loops",
-                              "euler_characteristic", "hausdorff_rel", "edge_length_mean"})
+                              "euler_characteristic", "hausdorff_rel", "edge_length_mean", "size_band_share",
+                              "size_ratio_max", "corners"})
         quality[key] = all[std::string(key) == "irregular_vertices" ? "irregular_interior" : key];
       m["quality"] = std::move(quality);
     } else {
