@@ -142,6 +142,93 @@ double align_loops_by_cones(const TriangleSoup& soup, const SurfaceAdjacency& ad
   return worst;
 }
 
+/// The area-weighted variance of u about its mean: the spread of the quad sizes
+/// (log scale) that the band [0.5, 2] x the size bounds.
+double size_spread(const Eigen::VectorXd& u, const std::vector<double>& area, double& mean) {
+  double total = 0, sum = 0;
+  for (Eigen::Index v = 0; v < u.size(); ++v) {
+    total += area[static_cast<std::size_t>(v)];
+    sum += area[static_cast<std::size_t>(v)] * u[v];
+  }
+  mean = sum / total;
+  double variance = 0;
+  for (Eigen::Index v = 0; v < u.size(); ++v)
+    variance += area[static_cast<std::size_t>(v)] * (u[v] - mean) * (u[v] - mean);
+  return variance / total;
+}
+
+/// Moves interior cones, one ring step at a time, so that the quad sizes spread
+/// less: the area-weighted variance V of u. Moving a cone of curvature k from a
+/// to b changes the metric's right side by k (e_b - e_a), so to first order
+/// dV = 2 k (g_b - g_a) with g = L^-1 (A (u - mean u)) (L symmetric): one solve
+/// ranks every move. A move is kept when the re-solved V drops and the loops'
+/// turns (LoopTurns) stay within `slack` of whole quarter turns or no worse than
+/// they were.
+void relax_cones_for_size(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const ConeMetricSolver& solver,
+                          const std::vector<double>& curvature, const std::vector<double>& area,
+                          const std::vector<char>& eligible, int separation, int passes, double slack,
+                          std::vector<Cone>& cones) {
+  const std::size_t loops = adjacency.boundary_loops.size();
+  const LoopTurns model = loops > 1 ? loop_turns(soup, adjacency, solver) : LoopTurns{};
+  auto alignment_cost = [&](const std::vector<Cone>& trial) {
+    if (loops < 2) return 0.0;
+    const std::vector<double> kappa = target_curvature(adjacency, quads_per_vertex(adjacency, trial));
+    Eigen::VectorXd rhs(static_cast<Eigen::Index>(kappa.size()));
+    for (std::size_t v = 0; v < kappa.size(); ++v) rhs[static_cast<Eigen::Index>(v)] = kappa[v] - curvature[v];
+    double c = 0;
+    for (std::size_t l = 0; l < loops; ++l)
+      if (static_cast<int>(l) != model.reference)
+        c += std::abs(quarter_turn_remainder(model.offset[l] - model.gradient[l].dot(rhs)));
+    return c;
+  };
+  auto metric = [&](const std::vector<Cone>& trial) {
+    return solver.solve(target_curvature(adjacency, quads_per_vertex(adjacency, trial)), curvature);
+  };
+  Eigen::VectorXd u = metric(cones);
+  double mean = 0;
+  double spread = size_spread(u, area, mean);
+  double aligned = alignment_cost(cones);
+  for (int pass = 0; pass < passes; ++pass) {
+    Eigen::VectorXd weighted(u.size());
+    for (Eigen::Index v = 0; v < u.size(); ++v) weighted[v] = area[static_cast<std::size_t>(v)] * (u[v] - mean);
+    const Eigen::VectorXd g = solver.apply_inverse(weighted);
+    bool moved = false;
+    for (std::size_t i = 0; i < cones.size(); ++i) {
+      const int a = cones[i].vertex;
+      if (adjacency.boundary_vertex[static_cast<std::size_t>(a)]) continue;
+      const double k = (4 - cones[i].quads) * quarter_turn;
+      std::vector<char> near(soup.points.size(), 0);
+      for (std::size_t j = 0; j < cones.size(); ++j)
+        if (j != i && !adjacency.boundary_vertex[static_cast<std::size_t>(cones[j].vertex)])
+          for (int w : ring_neighbourhood(soup, adjacency, cones[j].vertex, separation)) near[static_cast<std::size_t>(w)] = 1;
+      int best = -1;
+      double best_drop = 0;
+      for (int b : ring_neighbourhood(soup, adjacency, a, 1)) {
+        const auto sb = static_cast<std::size_t>(b);
+        if (b == a || near[sb] || !eligible[sb]) continue;
+        const double drop = k * (g[a] - g[b]);
+        if (drop > best_drop) best_drop = drop, best = b;
+      }
+      if (best < 0) continue;
+      std::vector<Cone> trial = cones;
+      trial[i].vertex = best;
+      const double trial_aligned = alignment_cost(trial);
+      if (trial_aligned > std::max(aligned, slack)) continue;
+      const Eigen::VectorXd trial_u = metric(trial);
+      double trial_mean = 0;
+      const double trial_spread = size_spread(trial_u, area, trial_mean);
+      if (trial_spread >= spread) continue;
+      cones = std::move(trial);
+      u = trial_u;
+      mean = trial_mean;
+      spread = trial_spread;
+      aligned = trial_aligned;
+      moved = true;
+    }
+    if (!moved) break;
+  }
+}
+
 /// The cones' curvature, and `deficit` quarter turns more spread over the
 /// interior by area.
 std::vector<double> spread_targets(const SurfaceAdjacency& adjacency, const std::vector<int>& quads,
@@ -240,6 +327,13 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
   if (several_loops)
     align_loops_by_cones(soup, adjacency, solver, curvature, eligible, options.alignment_rings,
                          options.cone_separation, cones);
+  if (options.size_relaxation_passes > 0) {
+    relax_cones_for_size(soup, adjacency, solver, curvature, area, eligible, options.cone_separation,
+                         options.size_relaxation_passes, options.relaxation_alignment_slack, cones);
+    if (several_loops)
+      align_loops_by_cones(soup, adjacency, solver, curvature, eligible, options.alignment_rings,
+                           options.cone_separation, cones);
+  }
   return cones;
 }
 

@@ -40,6 +40,13 @@ struct ConePlacementOptions {
   int alignment_rings = 4;
   /// ...keeping this many edges from the other interior cones.
   int cone_separation = 6;
+  /// Then the interior cones move, a ring at a time, while the quad sizes spread
+  /// less (the area-weighted variance of the log scale u), for at most this many
+  /// sweeps (0: they stay)...
+  int size_relaxation_passes = 10;
+  /// ...keeping the loops' turns within this (radians, summed) of whole quarter
+  /// turns, or no worse than they were.
+  double relaxation_alignment_slack = 0.02;
 };
 
 /// The corner cones: boundary vertices whose angle is away from pi.

@@ -152,33 +152,49 @@ std::vector<std::vector<int>> integer_candidates(const TriangleSoup& soup, const
   return phases;
 }
 
+/// The fitting energy with the seam rows and the fixed values as penalties,
+/// solved again after each fix. A fix only adds to a diagonal entry, and the
+/// stiffening only changes values, so the sparsity pattern never changes: CHOLMOD
+/// orders and analyses it once and factors numerically at each solve; the energy
+/// with the seam rows is assembled once per energy.
 class PenaltySolver {
  public:
   PenaltySolver(int variables, Triplets energy, Eigen::VectorXd rhs, std::vector<Row> rows)
-      : n_(variables), energy_(std::move(energy)), rhs_(std::move(rhs)), rows_(std::move(rows)) {}
+      : n_(variables), rows_(std::move(rows)) {
+    set_energy(std::move(energy), std::move(rhs));
+  }
 
-  void fix(int variable, double value) { rows_.push_back(Row{{{variable, 1.0}}, value}); }
+  void fix(int variable, double value) { fixed_.push_back({variable, value}); }
+
   void set_energy(Triplets energy, Eigen::VectorXd rhs) {
-    energy_ = std::move(energy);
-    rhs_ = std::move(rhs);
+    base_rhs_ = std::move(rhs);
+    for (const Row& r : rows_)
+      for (const auto& [i, ci] : r.terms) {
+        base_rhs_[i] += penalty_weight * ci * r.rhs;
+        for (const auto& [j, cj] : r.terms) energy.emplace_back(i, j, penalty_weight * ci * cj);
+      }
+    for (int v = 0; v < n_; ++v) energy.emplace_back(v, v, 0.0);  // every diagonal entry in the pattern
+    base_ = SparseMatrix(n_, n_);
+    base_.setFromTriplets(energy.begin(), energy.end());
   }
 
   Eigen::VectorXd solve() {
-    Triplets all = energy_;
-    Eigen::VectorXd b = rhs_;
-    for (const Row& r : rows_)
-      for (const auto& [i, ci] : r.terms) {
-        b[i] += penalty_weight * ci * r.rhs;
-        for (const auto& [j, cj] : r.terms) all.emplace_back(i, j, penalty_weight * ci * cj);
-      }
-    SparseMatrix H(n_, n_);
-    H.setFromTriplets(all.begin(), all.end());
-    Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> solver;
-    solver.compute(H);
-    if (solver.info() != Eigen::Success)
+    SparseMatrix H = base_;
+    Eigen::VectorXd b = base_rhs_;
+    for (const auto& [v, value] : fixed_) {
+      H.coeffRef(v, v) += penalty_weight;
+      b[v] += penalty_weight * value;
+    }
+    if (!analysed_) {
+      solver_.analyzePattern(H);
+      analysed_ = true;
+    }
+    solver_.factorize(H);
+    if (solver_.info() != Eigen::Success)
       throw Error(ErrorCode::solver, "the seamless map's system could not be factored");
-    Eigen::VectorXd z = solver.solve(b);
-    if (solver.info() != Eigen::Success || !z.allFinite()) throw Error(ErrorCode::solver, "the seamless map's solve failed");
+    Eigen::VectorXd z = solver_.solve(b);
+    if (solver_.info() != Eigen::Success || !z.allFinite())
+      throw Error(ErrorCode::solver, "the seamless map's solve failed");
     return z;
   }
 
@@ -189,14 +205,18 @@ class PenaltySolver {
       for (const auto& [i, c] : r.terms) s += c * z[i];
       worst = std::max(worst, std::abs(s));
     }
+    for (const auto& [v, value] : fixed_) worst = std::max(worst, std::abs(z[v] - value));
     return worst;
   }
 
  private:
   int n_;
-  Triplets energy_;
-  Eigen::VectorXd rhs_;
-  std::vector<Row> rows_;
+  std::vector<Row> rows_;                       ///< the seams' rows
+  std::vector<std::pair<int, double>> fixed_;   ///< values made integer
+  SparseMatrix base_;                           ///< energy + seam penalties
+  Eigen::VectorXd base_rhs_;
+  Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> solver_;
+  bool analysed_ = false;
 };
 
 /// Greedy rounding, phase by phase: fix every candidate already integer and the

@@ -28,6 +28,22 @@ constexpr double concave_corner_low_deg = 240.0, concave_corner_high_deg = 300.0
 /// shortest boundary edge from it.
 constexpr double corner_match_share = 0.25;
 
+/// A corner of a boundary loop, seen at a length scale.
+struct BoundaryCorner {
+  int vertex = -1;
+  double angle_deg = 0;  ///< the interior angle: 180 minus the boundary's turning within the window
+};
+
+/// The corners of `reference`'s boundary at the scale `window` (> 0, a length):
+/// boundary vertices where the chords to the boundary points `window` before and
+/// after along the loop meet at more than corner_angle_tolerance_deg from straight,
+/// and the geodesic turning within the window (the sum of pi minus the angle sums)
+/// does too, and that turn more than any other vertex within the window. A CAD
+/// corner (straight or smooth on both sides) is found with its exact angle; the
+/// teeth of a scanned boundary smaller than the window are not corners.
+/// Precondition: `reference` is a manifold triangle surface.
+std::vector<BoundaryCorner> boundary_corners(const TriangleSoup& reference, double window);
+
 struct CornerCount {
   Vec3 position = Vec3::Zero();  ///< the reference's corner vertex
   double angle_deg = 0;          ///< its interior angle on the reference
@@ -45,9 +61,9 @@ struct CornerQuads {
   std::vector<CornerCount> corners;  ///< every corner, in the reference's vertex order
 };
 
-/// The corners of `reference` (boundary vertices whose angle is more than
-/// corner_angle_tolerance_deg from 180) and the quads of `mesh` at each: the faces
-/// around the boundary point of `mesh` nearest to the corner, if it is within
+/// The corners of `reference` at the scale of half the mean edge of `mesh`
+/// (boundary_corners) and the quads of `mesh` at each: the faces around the
+/// boundary point of `mesh` nearest to the corner, if it is within
 /// corner_match_share of its shortest boundary edge, else none (quads = 0).
 /// Precondition: `reference` is a manifold triangle surface.
 CornerQuads corner_quads(const PolygonMesh& mesh, const TriangleSoup& reference);

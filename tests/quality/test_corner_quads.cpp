@@ -138,3 +138,36 @@ TEST_CASE("quad sizes against a target: the band share and the extreme ratios") 
   CHECK(r.corners_convex == 4);
   CHECK(r.corners_convex_wrong == 0);
 }
+
+TEST_CASE("teeth of a scanned boundary smaller than the window are not corners; seen closer they are") {
+  // the unit square whose bottom edge (points 0.05 apart) has four teeth 0.03 high in
+  // its middle: peaks of 242 degrees, valleys of 118 between them, 149 at the ends
+  TriangleSoup strip;
+  const int n = 20;
+  for (int i = 0; i <= n; ++i) strip.points.push_back(Vec3(0.05 * i, (i % 2 == 1 && i >= 7 && i <= 13) ? 0.03 : 0, 0));
+  for (int i = 0; i <= n; ++i) strip.points.push_back(Vec3(0.05 * i, 1, 0));
+  for (int i = 0; i < n; ++i) {
+    const int b = i, t = n + 1 + i;
+    strip.triangles.push_back({b, b + 1, t + 1});
+    strip.triangles.push_back({b, t + 1, t});
+  }
+  // seen at the scale of quads of 0.5 (window 0.25): the square's four corners only
+  const CornerQuads c = corner_quads(grid_cells(2, 0.5, all_cells), strip);
+  CHECK(c.convex == 4);
+  CHECK(c.convex_wrong == 0);
+  CHECK(c.concave == 0);
+  CHECK(c.other == 0);
+  for (const CornerCount& k : c.corners) CHECK(k.angle_deg == doctest::Approx(90).epsilon(1e-9));
+  // seen at 0.01: the square's corners, the four peaks and the three inner valleys
+  const std::vector<BoundaryCorner> close = boundary_corners(strip, 0.01);
+  int peaks = 0, valleys = 0, right = 0;
+  for (const BoundaryCorner& k : close) {
+    peaks += std::abs(k.angle_deg - (180 + 2 * std::atan(0.6) * 180 / M_PI)) < 1e-9;
+    valleys += std::abs(k.angle_deg - (180 - 2 * std::atan(0.6) * 180 / M_PI)) < 1e-9;
+    right += std::abs(k.angle_deg - 90) < 1e-9;
+  }
+  CHECK(close.size() == 11);
+  CHECK(peaks == 4);
+  CHECK(valleys == 3);
+  CHECK(right == 4);
+}
