@@ -245,11 +245,17 @@ Eigen::VectorXd quantize(PenaltySolver& solver, const std::vector<std::vector<in
         }
       }
       if (nearest < 0) break;
-      fixed[static_cast<std::size_t>(nearest)] = 1;
-      solver.fix(nearest, std::round(z[nearest]));
-      integers.push_back({nearest, std::round(z[nearest])});
-      ++report.integer_values;
-      report.max_rounding = std::max(report.max_rounding, nearest_distance);
+      // a cone's position and a translation are lattice vectors: both of their
+      // coordinates are rounded in one step (one solve, not two)
+      const bool paired = &candidates != &phases[1];
+      for (int v : paired ? std::vector<int>{nearest, nearest ^ 1} : std::vector<int>{nearest}) {
+        if (fixed[static_cast<std::size_t>(v)]) continue;
+        fixed[static_cast<std::size_t>(v)] = 1;
+        solver.fix(v, std::round(z[v]));
+        integers.push_back({v, std::round(z[v])});
+        ++report.integer_values;
+        report.max_rounding = std::max(report.max_rounding, std::abs(z[v] - std::round(z[v])));
+      }
       z = solver.solve();
       ++report.solves;
     }
