@@ -63,19 +63,27 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
   const SurfaceTopology input = topology_of(setup.soup);
   const int basis_count = static_cast<int>(setup.basis.size());
 
-  // attempts as the retry policy orders them, the best kept (candidate_ranking.h)
-  RetryPolicy retries(retry_inputs(setup, options));
-  Candidate best = mesh_attempt(setup, options, retries.first().request, stages);
-  int form_attempts = 1, rounding_attempts = 0;
-  while (const std::optional<AttemptPlan> plan = retries.next(standing(best, input, options.acceptance))) {
-    const StageNote note = announce(*plan, basis_count);
-    stages.next(note.key, note.message);
-    ++(plan->reason == AttemptPlan::Reason::rounding ? rounding_attempts : form_attempts);
-    Candidate challenger = mesh_attempt(setup, options, plan->request, stages);
-    if (replaces(challenger.quality, best.quality, input, options.acceptance)) best = std::move(challenger);
+  // auto on a surface with CAD corners: the cone route first (cone_route.h)
+  ConesFirst first = try_cones_first(setup, options, input, stages);
+  Candidate best;
+  ConeRouteOutcome cones;
+  int form_attempts = 0, rounding_attempts = 0;
+  if (first.kept) {
+    best = std::move(*first.kept);
+  } else {
+    // attempts as the retry policy orders them, the best kept (candidate_ranking.h)
+    RetryPolicy retries(retry_inputs(setup, options));
+    best = mesh_attempt(setup, options, retries.first().request, stages);
+    form_attempts = 1;
+    while (const std::optional<AttemptPlan> plan = retries.next(standing(best, input, options.acceptance))) {
+      const StageNote note = announce(*plan, basis_count);
+      stages.next(note.key, note.message);
+      ++(plan->reason == AttemptPlan::Reason::rounding ? rounding_attempts : form_attempts);
+      Candidate challenger = mesh_attempt(setup, options, plan->request, stages);
+      if (replaces(challenger.quality, best.quality, input, options.acceptance)) best = std::move(challenger);
+    }
+    cones = try_cones_if_off_band(setup, options, input, stages, best, std::move(first));
   }
-
-  const ConeRouteOutcome cones = try_cones_if_off_band(setup, options, input, stages, best);
   if (options.max_deviation >= 0 && best.quality.has_quads && best.result.singularities == "abel")
     refine_where_deviating(best, options, setup.diagonal, stages, [&](double density) {
       AttemptRequest coarser;

@@ -501,7 +501,9 @@ TEST_CASE("mesh --singularities auto: a plate whose corners get two quads each f
   CHECK(corners == 4);
   CHECK(fives == 8);
   CHECK(s["size_band_share"].get<double>() >= 0.9);
-  CHECK(s["size_band_share"].get<double>() > s["abel_size_band_share"].get<double>());
+  // the plate has CAD corners, which the Abel quads split in two: the cone route
+  // ran first and sufficed, so there are no Abel quads to measure
+  CHECK(s["abel_size_band_share"].is_null());
   const auto& q = j["quality"];
   CHECK(q["euler_characteristic"] == -1);
   CHECK(q["boundary_loops"] == 3);

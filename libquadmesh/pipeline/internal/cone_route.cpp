@@ -125,28 +125,64 @@ double band_share(const QuadMeshResult& r) {
 
 }  // namespace
 
+namespace {
+
+/// The cone route's candidate: the placements in turn, until one gives sound quads
+/// (cramped cones fold the map). Throws qm::Error with the first placement's
+/// failure when none gives quads.
+Candidate cone_candidate(const FormSetup& setup, const QuadMeshOptions& options, SurfaceTopology input,
+                         Stages& stages) {
+  Candidate cones;
+  std::string placement_failure;
+  for (const ConePlacementOptions& placement : cone_placements()) {
+    try {
+      cones = cone_attempt(setup, placement, stages);
+    } catch (const Error& e) {
+      if (placement_failure.empty()) placement_failure = e.what();
+      continue;
+    }
+    if (sound(cones.quality, input, options.acceptance)) break;
+  }
+  if (!cones.quality.has_quads) throw Error(ErrorCode::unsupported, placement_failure);
+  return cones;
+}
+
+}  // namespace
+
+bool cones_first(const TriangleSoup& soup, const QuadMeshOptions& options) {
+  return options.singularities == Singularities::automatic && !corner_cones(soup, surface_adjacency(soup)).empty();
+}
+
+ConesFirst try_cones_first(const FormSetup& setup, const QuadMeshOptions& options, SurfaceTopology input,
+                           Stages& stages) {
+  ConesFirst out;
+  if (!cones_first(setup.soup, options)) return out;
+  try {
+    Candidate cones = cone_candidate(setup, options, input, stages);
+    const bool enough = sound(cones.quality, input, options.acceptance) && band_share(cones.result) >= size_band_goal &&
+                        corner_mismatches(cones.result) == 0 &&
+                        relative_hausdorff(cones.result) <= options.acceptance.max_hausdorff_relative;
+    (enough ? out.kept : out.tried) = std::move(cones);
+  } catch (const Error& e) {
+    out.failure = e.what();
+  }
+  return out;
+}
+
 ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOptions& options, SurfaceTopology input,
-                                       Stages& stages, Candidate& best) {
+                                       Stages& stages, Candidate& best, ConesFirst first) {
   ConeRouteOutcome outcome;
   if (options.singularities != Singularities::automatic) return outcome;
   const double abel_band = best.quality.has_quads ? band_share(best.result) : 0.0;
   outcome.abel_size_band_share = abel_band;
   const std::size_t abel_corners = best.quality.has_quads ? corner_mismatches(best.result) : 0;
   if (abel_band >= size_band_goal && abel_corners == 0) return outcome;
+  if (!first.failure.empty()) {  // tried before the Abel route, and failed
+    outcome.failure = first.failure;
+    return outcome;
+  }
   try {
-    // the placements in turn, until one gives sound quads (cramped cones fold the map)
-    Candidate cones;
-    std::string placement_failure;
-    for (const ConePlacementOptions& placement : cone_placements()) {
-      try {
-        cones = cone_attempt(setup, placement, stages);
-      } catch (const Error& e) {
-        if (placement_failure.empty()) placement_failure = e.what();
-        continue;
-      }
-      if (sound(cones.quality, input, options.acceptance)) break;
-    }
-    if (!cones.quality.has_quads) throw Error(ErrorCode::unsupported, placement_failure);
+    Candidate cones = first.tried ? std::move(*first.tried) : cone_candidate(setup, options, input, stages);
     const double cones_band = band_share(cones.result);
     const std::size_t cones_corners = corner_mismatches(cones.result);
     if (!cones_replace(cones.quality, cones_band, abel_band, cones_corners, abel_corners, input, options.acceptance)) {

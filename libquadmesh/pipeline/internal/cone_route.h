@@ -10,6 +10,7 @@
 #include "libquadmesh/pipeline/internal/stages.h"
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,11 +52,28 @@ bool cones_replace(const CandidateQuality& cones, double cones_band, double abel
 /// Hausdorff distance of S (the cone route has no size adaptivity yet); records both
 /// shares and, when the Abel result stays, why (for QuadMeshResult::abel_size_band_share
 /// and cone_route_failure, set on the final result). Nothing for abel.
+/// Singularities::automatic on a surface with CAD corners (cone_placement.h
+/// corner_cones): the Abel quads split every right corner in two, so the cone
+/// route runs first; its candidate is `kept` (the Abel route skipped) when it is
+/// sound, has size_band_goal of its quads in the band, every corner right and
+/// lies within the Hausdorff criterion, else it is `tried` (for
+/// try_cones_if_off_band to weigh against the Abel quads), or `failure` says why
+/// there is none.
+struct ConesFirst {
+  std::optional<Candidate> kept;
+  std::optional<Candidate> tried;
+  std::string failure;
+};
+bool cones_first(const TriangleSoup& soup, const QuadMeshOptions& options);
+ConesFirst try_cones_first(const FormSetup& setup, const QuadMeshOptions& options, SurfaceTopology input,
+                           Stages& stages);
+
 struct ConeRouteOutcome {
   double abel_size_band_share = std::numeric_limits<double>::quiet_NaN();  ///< NaN: not measured
   std::string failure;  ///< why the cone route was tried and not kept (empty otherwise)
 };
+/// `first`: what try_cones_first found (its candidate is reused, not recomputed).
 ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOptions& options, SurfaceTopology input,
-                                       Stages& stages, Candidate& best);
+                                       Stages& stages, Candidate& best, ConesFirst first = {});
 
 }  // namespace qm
