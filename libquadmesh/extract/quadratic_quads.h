@@ -30,7 +30,7 @@ struct QuadraticQuads {
   /// boundary: a caller with the exact boundary (CAD curves) may move them onto it
   std::vector<int> boundary_nodes;
   double max_move = 0;  ///< largest distance from a straight midpoint to its node (S or its polyline)
-  std::size_t cad_nodes = 0;  ///< boundary nodes a caller moved onto CAD curves (0 here)
+  std::size_t cad_nodes = 0;  ///< boundary corners and edge nodes a caller moved onto CAD curves (0 here)
 };
 
 /// The node of each edge is the point of S closest to the edge's straight midpoint

@@ -51,6 +51,14 @@ QuadraticQuads quadratic_output(const QuadMeshResult& result, bool complete, con
   const CurveLookup curves = curve_lookup(result.surface.cad);
   std::vector<io::CurvePointQuery> queries;
   std::vector<int> moved;
+  // the corners on one CAD curve (a corner at a CAD vertex, on two, is exact already)
+  for (std::size_t v = 0; v < result.quads.points.size(); ++v) {
+    if (result.boundary_loop_of_point[v] < 0) continue;
+    const std::set<int> on = curves.at(result.quads.locations[v]);
+    if (on.size() != 1) continue;
+    queries.push_back({*on.begin(), out.points[v]});
+    moved.push_back(static_cast<int>(v));
+  }
   for (int node : out.boundary_nodes) {
     const auto [a, b] = out.edge_of_node[static_cast<std::size_t>(node - out.first_edge_node)];
     const std::set<int> ca = curves.at(result.quads.locations[static_cast<std::size_t>(a)]);
@@ -66,6 +74,9 @@ QuadraticQuads quadratic_output(const QuadMeshResult& result, bool complete, con
   const std::vector<Vec3> on_curves = io::closest_points_on_cad_curves(cad_path, queries);
   for (std::size_t i = 0; i < moved.size(); ++i) out.points[static_cast<std::size_t>(moved[i])] = on_curves[i];
   out.cad_nodes = moved.size();
+  for (std::size_t i = 0; i < moved.size(); ++i)  // the corners may have moved by the triangulation's sagitta
+    if (moved[i] < out.first_edge_node)
+      out.max_move = std::max(out.max_move, (on_curves[i] - result.quads.points[static_cast<std::size_t>(moved[i])]).norm());
   return out;
 }
 

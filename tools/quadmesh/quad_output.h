@@ -47,8 +47,9 @@ CurveLookup curve_lookup(const CadCurves& cad);
 io::OutputMesh output_mesh(const QuadMeshResult& result, const QuadraticQuads* quadratic = nullptr);
 
 /// The quadratic quads of --order 2 (extract/quadratic_quads.h); for CAD input
-/// (`cad_path` not empty) the boundary nodes moved onto their CAD curve (the one
-/// both ends of their edge lie on) through io/cad_curve_points.h.
+/// (`cad_path` not empty) every boundary node moved onto its CAD curve (io/
+/// cad_curve_points.h): an edge node onto the curve both ends of its edge lie on, a
+/// corner on one curve onto it (from the triangulation's chord, by its sagitta).
 QuadraticQuads quadratic_output(const QuadMeshResult& result, bool complete, const std::string& cad_path);
 
 MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, const MeshOptions& options,
