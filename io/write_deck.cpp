@@ -39,8 +39,12 @@ void write_small_entry(std::ostream& out, const std::string& name, const std::ve
 
 void write_inp(std::ostream& out, const DeckMesh& deck) {
   const bool shell = deck.element.kind == ElementKind::shell;
-  out << fmt::format("** quadmesh: {} nodes, {} {} elements ({})\n", deck.nodes.size(), deck.elements.size(),
-                     deck.element.name, kind_words(deck.element.kind));
+  std::size_t triangles = 0;
+  for (const auto& e : deck.elements) triangles += e.size() == 3;
+  out << fmt::format("** quadmesh: {} nodes, {} {} elements{} ({})\n", deck.nodes.size(),
+                     deck.elements.size() - triangles, deck.element.name,
+                     triangles ? fmt::format(" and {} {}", triangles, deck.triangle.name) : std::string(),
+                     kind_words(deck.element.kind));
   out << fmt::format("** element set {}; per boundary group a node set and an element-edge surface of the same name:",
                      deck.element_set);
   for (const DeckSet& s : deck.sets) out << ' ' << s.name;
