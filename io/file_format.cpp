@@ -32,6 +32,13 @@ bool is_cad(Format f) {
   return f == Format::geo || f == Format::step || f == Format::brep || f == Format::iges;
 }
 
+bool is_deck(Format f) { return f == Format::inp || f == Format::bdf || f == Format::unv; }
+
+int max_quad_nodes(Format f) {
+  if (f == Format::msh || f == Format::vtk) return 9;
+  return is_deck(f) ? 8 : 4;
+}
+
 bool is_readable(Format f) {
   switch (f) {
     case Format::obj: case Format::off: case Format::ply: case Format::stl: case Format::msh:

@@ -1,6 +1,7 @@
 #include "io/write_mesh.h"
 
 #include "io/atomic_file.h"
+#include "io/write_deck.h"
 #include "io/gmsh_model.h"
 #include "io/gmsh_session.h"
 #include "libquadmesh/core/error.h"
@@ -19,6 +20,8 @@ namespace {
 
 [[noreturn]] void fail(const std::string& message) { throw Error(ErrorCode::bad_input, message); }
 
+std::string fs_extension(const std::string& path) { return std::filesystem::path(path).extension().string(); }
+
 void write_with_cgal(const std::string& path, const OutputMesh& mesh) {
   std::vector<Point3> points;
   points.reserve(mesh.points.size());
@@ -35,7 +38,9 @@ void write_with_cgal(const std::string& path, const OutputMesh& mesh) {
 int gmsh_face_type(std::size_t n) {
   if (n == 3) return 2;
   if (n == 4) return 3;
-  throw AssertionError(fmt::format("faces must have 3 or 4 corners, found {}", n));
+  if (n == 8) return 16;  // 8-node (serendipity) quadrangle
+  if (n == 9) return 10;  // 9-node quadrangle
+  throw AssertionError(fmt::format("faces must have 3, 4, 8 or 9 nodes, found {}", n));
 }
 
 void write_with_gmsh(const std::string& path, const OutputMesh& mesh, const WriteOptions& options) {
@@ -59,7 +64,7 @@ std::vector<std::size_t> add_to_gmsh_model(const OutputMesh& mesh) {
   // faces are numbered in input order: element tag of face i is face_tags[i]
   std::vector<std::size_t> face_tags(mesh.faces.size());
   std::size_t next_element = 1;
-  for (std::size_t corners : {std::size_t{3}, std::size_t{4}}) {
+  for (std::size_t corners : {std::size_t{3}, std::size_t{4}, std::size_t{8}, std::size_t{9}}) {
     std::vector<std::size_t> tags, nodes;
     for (std::size_t i = 0; i < mesh.faces.size(); ++i) {
       const auto& f = mesh.faces[i];
@@ -74,12 +79,15 @@ std::vector<std::size_t> add_to_gmsh_model(const OutputMesh& mesh) {
   for (const LineGroup& group : mesh.line_groups) {
     const int curve = gmsh::model::addDiscreteEntity(1);
     std::vector<std::size_t> tags, nodes;
-    for (const auto& e : group.edges) {
+    const bool quadratic = !group.mids.empty();
+    for (std::size_t i = 0; i < group.edges.size(); ++i) {
+      const auto& e = group.edges[i];
       tags.push_back(next_element++);
       nodes.push_back(static_cast<std::size_t>(e[0]) + 1);
       nodes.push_back(static_cast<std::size_t>(e[1]) + 1);
+      if (quadratic) nodes.push_back(static_cast<std::size_t>(group.mids[i]) + 1);
     }
-    if (!tags.empty()) gmsh::model::mesh::addElementsByType(curve, 1, tags, nodes);
+    if (!tags.empty()) gmsh::model::mesh::addElementsByType(curve, quadratic ? 8 : 1, tags, nodes);
     const int physical = gmsh::model::addPhysicalGroup(1, {curve});
     gmsh::model::setPhysicalName(1, physical, group.name);
   }
@@ -129,9 +137,14 @@ void write_mesh(const std::string& path, const OutputMesh& mesh, const WriteOpti
   if (options.msh_version != 4.1 && options.msh_version != 2.2)
     fail(fmt::format("{}: MSH version {} is not 4.1 or 2.2", path, options.msh_version));
   const Format format = format_of(path);
+  for (const auto& f : mesh.faces)
+    if (static_cast<int>(f.size()) > max_quad_nodes(format))
+      fail(fmt::format("{}: {} cannot hold {}-node quads", path, fs_extension(path), f.size()));
   write_atomically(path, [&](const std::string& temporary) {
     if (format == Format::obj || format == Format::off || format == Format::ply)
       write_with_cgal(temporary, mesh);
+    else if (is_deck(format))
+      write_deck(temporary, format, mesh, options.element_type);
     else
       write_with_gmsh(temporary, mesh, options);
   });

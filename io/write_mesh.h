@@ -15,6 +15,7 @@ namespace qm::io {
 struct LineGroup {
   std::string name;
   std::vector<std::array<int, 2>> edges;  ///< point indices
+  std::vector<int> mids;  ///< quadratic meshes: the node of each edge (same order); else empty
 };
 
 /// A named set of points written as point elements (zeros, singular vertices).
@@ -24,7 +25,9 @@ struct PointGroup {
 };
 
 /// What gets written: points, faces of 3 or 4 corners (counter-clockwise seen from
-/// the surface's front), line and point groups, and the name of the surface's group.
+/// the surface's front) or quadratic quads of 8 or 9 nodes (corners, then the nodes
+/// of the edges 0-1, 1-2, 2-3, 3-0, then the inside node), line and point groups,
+/// and the name of the surface's group.
 struct OutputMesh {
   std::vector<Vec3> points;
   std::vector<std::vector<int>> faces;
@@ -36,12 +39,16 @@ struct OutputMesh {
 struct WriteOptions {
   double msh_version = 4.1;  ///< 4.1 or 2.2 for .msh
   bool binary = false;       ///< binary .msh (Gmsh formats only)
+  /// Solver decks (.inp .bdf .unv): the element type (io/deck_element.h); empty:
+  /// from the geometry (plane stress in the z = 0 plane, else shell).
+  std::string element_type;
 };
 
 /// Writes atomically: to a temporary file beside `path`, renamed at the end, so a
 /// failure never leaves a partial file. Gmsh formats get the line groups as
 /// physical curves and the faces as one physical surface; OBJ/OFF/PLY get the faces
-/// only. Throws qm::Error(bad_input) for an unknown extension or an unwritable
+/// only; solver decks (.inp .bdf .unv) are written by io/write_deck.h: the faces
+/// as elements, each group as a node set (and, in .inp, an element-edge surface). Throws qm::Error(bad_input) for an unknown extension or an unwritable
 /// destination.
 void write_mesh(const std::string& path, const OutputMesh& mesh, const WriteOptions& options = {});
 

@@ -17,14 +17,18 @@
 // The stages, for those who want them one at a time: analyze_topology and
 // assess_applicability (topology/), symmetric_forms (forms/), quantize (param/),
 // extract_lattice_quads (extract/), quad_quality and two_sided_hausdorff
-// (quality/). Headers under an internal/ folder are the library's own helpers.
+// (quality/); quadratic_quads (extract/: 8- or 9-node quads with their nodes on
+// r.surface) and curved_jacobians (quality/) for quadratic elements. Headers
+// under an internal/ folder are the library's own helpers.
 #pragma once
 
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/core/triangle_soup.h"
 #include "libquadmesh/extract/lattice_quads.h"
+#include "libquadmesh/extract/quadratic_quads.h"
 #include "libquadmesh/pipeline/acceptance_criteria.h"
 #include "libquadmesh/pipeline/mesh_quads.h"
+#include "libquadmesh/quality/curved_jacobian.h"
 #include "libquadmesh/quality/hausdorff.h"
 #include "libquadmesh/quality/quad_quality.h"
 #include "libquadmesh/topology/applicability.h"

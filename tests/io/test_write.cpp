@@ -57,7 +57,7 @@ Counts count_su2(const std::string& path) {
 
 io::OutputMesh annulus_with_groups(const TriangleSoup& soup, int sectors) {
   io::OutputMesh mesh = io::output_mesh_of(soup);
-  io::LineGroup inner{"boundary_0", {}}, outer{"boundary_1", {}};
+  io::LineGroup inner{"boundary_0", {}, {}}, outer{"boundary_1", {}, {}};
   const int last_ring = static_cast<int>(soup.points.size()) - sectors;
   for (int j = 0; j < sectors; ++j) {
     inner.edges.push_back({j, (j + 1) % sectors});

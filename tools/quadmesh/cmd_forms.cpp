@@ -66,7 +66,7 @@ void write_form_views(const std::string& path, const SymmetricForms& forms,
   auto add_lines = [&](const char* kind, const std::vector<std::vector<int>>& list, bool closed) {
     for (std::size_t l = 0; l < list.size(); ++l) {
       // loops count from 0; bridge k (from 1) joins boundary 0 to boundary k
-      io::LineGroup group{fmt::format("{}_{}", kind, closed ? l : l + 1), {}};
+      io::LineGroup group{fmt::format("{}_{}", kind, closed ? l : l + 1), {}, {}};
       const auto& p = list[l];
       for (std::size_t i = 0; i + 1 < p.size(); ++i) group.edges.push_back({p[i], p[i + 1]});
       if (closed && p.size() > 2) group.edges.push_back({p.back(), p.front()});

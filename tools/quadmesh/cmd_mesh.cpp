@@ -1,4 +1,5 @@
 #include "io/atomic_file.h"
+#include "io/deck_element.h"
 #include "io/write_mesh.h"
 #include "libquadmesh/pipeline/mesh_quads.h"
 #include "libquadmesh/quality/hausdorff.h"
@@ -15,10 +16,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace qm::tools {
 
 namespace {
+int nodes_per_quad(const MeshOptions& options) { return options.order == 1 ? 4 : options.complete ? 9 : 8; }
+
 /// Before any work: -o and --report writable, and neither the input nor each
 /// other (README "Exit codes": 2).
 void check_files(const MeshOptions& options) {
@@ -28,6 +32,16 @@ void check_files(const MeshOptions& options) {
   if (!options.coefficients.empty() &&
       std::all_of(options.coefficients.begin(), options.coefficients.end(), [](double c) { return c == 0; }))
     throw UsageError("--coeffs: all coefficients are 0, so h would be 0; give at least one that is not");
+  if (options.order != 1 && options.order != 2)
+    throw UsageError(fmt::format("--order {}: quadmesh writes linear (--order 1) or quadratic (--order 2) quads",
+                                 options.order));
+  if (options.complete && options.order != 2)
+    throw UsageError("--complete asks for 9-node quads: it needs --order 2");
+  try {
+    io::check_element_request(options.output, nodes_per_quad(options), options.element_type);
+  } catch (const Error& e) {
+    throw UsageError(e.what());
+  }
   if (options.quads > options.max_quads)
     throw UsageError(fmt::format("--quads {} is more than --max-quads {}; raise --max-quads to mesh it",
                                  options.quads, options.max_quads));
@@ -80,13 +94,15 @@ void check_form_choice(const MeshOptions& options, const AnalyzedSurface& surfac
 
 /// The mesh and the report appear together or not at all; a file that cannot
 /// be written is an output path problem (exit 2), and then none is left.
-void write_outputs(const MeshOptions& options, const QuadMeshResult& result, const MeshSummary& summary) {
+void write_outputs(const MeshOptions& options, const QuadMeshResult& result, const MeshSummary& summary,
+                   const QuadraticQuads* quadratic) {
   try {
     io::AtomicFiles files;
     io::WriteOptions write;
     write.msh_version = options.msh_version;
+    write.element_type = options.element_type;
     files.add(options.output, [&](const std::string& temporary) {
-      io::write_mesh(temporary, output_mesh(result), write);
+      io::write_mesh(temporary, output_mesh(result, quadratic), write);
     });
     if (!options.report.empty())
       files.add(options.report, [&](const std::string& temporary) { write_report(temporary, summary); });
@@ -154,6 +170,20 @@ void require_conforming(const MeshSummary& s, const QuadMeshResult& r) {
                           q.euler_characteristic, q.boundary_loops, s.input_euler_characteristic,
                           s.input_boundary_loops, r.extraction.bad_triangles, r.extraction.incomplete_cells, where,
                           cause, cones));
+}
+
+/// A curved quad whose Jacobian determinant is <= 0 somewhere is rejected by every
+/// solver: refuse to write the mesh (exit 1), naming where the worst is.
+void require_positive_jacobians(const MeshSummary& s, const QuadraticQuads* quadratic) {
+  if (!s.curved || s.curved->non_positive == 0) return;
+  Vec3 c = Vec3::Zero();
+  for (std::size_t i = 0; i < 4; ++i)
+    c += quadratic->points[static_cast<std::size_t>(quadratic->elements[static_cast<std::size_t>(s.curved->worst)][i])] / 4.0;
+  throw Error(ErrorCode::solver,
+              fmt::format("{} curved quads would have a Jacobian determinant <= 0 (min ratio {:.3g}, near ({:.6g}, "
+                          "{:.6g}, {:.6g})): the surface bends too much within a quad; no output was written; give a "
+                          "smaller --size",
+                          s.curved->non_positive, s.curved->min_ratio, c.x(), c.y(), c.z()));
 }
 
 /// Lattice cells the extraction could not make into quads leave gaps in the mesh
@@ -254,11 +284,18 @@ int run_mesh(const MeshOptions& options, const CommonOptions& common) {
   const QuadMeshResult result =
       mesh_quads(in.surface.soup, mesher, [&](const std::string& stage) { progress.stage(stage); });
 
+  std::optional<QuadraticQuads> quadratic;
+  if (options.order == 2) {
+    progress.stage(fmt::format("placing the nodes of the {}-node quads on the surface", nodes_per_quad(options)));
+    quadratic = quadratic_output(result, options.complete,
+                                 io::is_cad(io::format_of(options.input)) ? options.input : std::string());
+  }
   progress.stage("measuring quality");
-  const MeshSummary summary = summarize(in, result, options, progress.elapsed());
+  const MeshSummary summary = summarize(in, result, options, progress.elapsed(), quadratic ? &*quadratic : nullptr);
   require_conforming(summary, result);
+  require_positive_jacobians(summary, quadratic ? &*quadratic : nullptr);
   progress.stage(fmt::format("writing {}", options.output));
-  write_outputs(options, result, summary);
+  write_outputs(options, result, summary, quadratic ? &*quadratic : nullptr);
   print_summary(summary);
   warn_if_cells_dropped(result);
   if (!result.cone_route_failure.empty())

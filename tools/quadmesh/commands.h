@@ -39,6 +39,9 @@ struct MeshOptions {
   double max_deviation = 0.0;           ///< --max-deviation D; 0: half the size; < 0: off
   double max_deviation_relative = 0.0;  ///< --max-deviation P%: P/100 of the diagonal
   double msh_version = 4.1;
+  int order = 1;             ///< --order: 1 linear quads, 2 quadratic
+  bool complete = false;     ///< --complete: 9-node quadratic quads
+  std::string element_type;  ///< --element-type: solver decks (io/deck_element.h); empty: from the geometry
 };
 
 struct FormsOptions {

@@ -183,6 +183,12 @@ int run(int argc, char** argv) {
   mesh_cmd->add_option("--report", mesh.report, "Write a JSON report (quality, zeros, quantization, timings)");
   checked(mesh_cmd->add_option("--msh-version", mesh.msh_version, "MSH output version: 4.1 or 2.2"),
           msh_version());
+  mesh_cmd->add_option("--order", mesh.order,
+                       "Element order: 1 (4-node quads) or 2 (8-node quads, nodes on the input surface)");
+  mesh_cmd->add_flag("--complete", mesh.complete, "With --order 2: 9-node quads (a node inside each quad)");
+  mesh_cmd->add_option("--element-type", mesh.element_type,
+                       "Solver decks (.inp .bdf .unv): the element type (CPS4, S8R, CQUAD8, ..., or plane-stress, "
+                       "plane-strain, shell; default: plane stress in the z = 0 plane, else shell)");
 
   QualityOptions quality;
   CLI::App* quality_cmd =

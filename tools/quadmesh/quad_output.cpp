@@ -1,5 +1,6 @@
 #include "tools/quadmesh/quad_output.h"
 
+#include "io/cad_curve_points.h"
 #include "libquadmesh/quality/size_band.h"
 
 #include "tools/common/quality_json.h"
@@ -16,10 +17,11 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-/// CAD curves that a quad point can lie on: those of the input boundary edges
-/// through it.
-std::set<int> curves_at(const SurfaceLocation& loc, const std::map<std::pair<int, int>, int>& curve_of_edge,
-                        const std::multimap<int, int>& curves_of_vertex) {
+Json complex_json(Complex z) { return Json::array({z.real(), z.imag()}); }
+
+}  // namespace
+
+std::set<int> CurveLookup::at(const SurfaceLocation& loc) const {
   std::set<int> out;
   if (loc.kind == SurfaceLocation::Kind::edge) {
     const auto it = curve_of_edge.find({loc.a, loc.b});
@@ -31,27 +33,72 @@ std::set<int> curves_at(const SurfaceLocation& loc, const std::map<std::pair<int
   return out;
 }
 
-Json complex_json(Complex z) { return Json::array({z.real(), z.imag()}); }
+CurveLookup curve_lookup(const CadCurves& cad) {
+  CurveLookup out;
+  for (const CurveEdge& e : cad.edges) {
+    out.curve_of_edge[{std::min(e.a, e.b), std::max(e.a, e.b)}] = e.curve;
+    out.curves_of_vertex.insert({e.a, e.curve});
+    out.curves_of_vertex.insert({e.b, e.curve});
+  }
+  return out;
+}
 
-}  // namespace
+QuadraticQuads quadratic_output(const QuadMeshResult& result, bool complete, const std::string& cad_path) {
+  QuadraticQuadsOptions options;
+  options.complete = complete;
+  QuadraticQuads out = quadratic_quads(result.quads.points, result.quads.quads, result.surface, options);
+  if (cad_path.empty() || result.surface.cad.edges.empty()) return out;
+  const CurveLookup curves = curve_lookup(result.surface.cad);
+  std::vector<io::CurvePointQuery> queries;
+  std::vector<int> moved;
+  // the corners on one CAD curve (a corner at a CAD vertex, on two, is exact already)
+  for (std::size_t v = 0; v < result.quads.points.size(); ++v) {
+    if (result.boundary_loop_of_point[v] < 0) continue;
+    const std::set<int> on = curves.at(result.quads.locations[v]);
+    if (on.size() != 1) continue;
+    queries.push_back({*on.begin(), out.points[v]});
+    moved.push_back(static_cast<int>(v));
+  }
+  for (int node : out.boundary_nodes) {
+    const auto [a, b] = out.edge_of_node[static_cast<std::size_t>(node - out.first_edge_node)];
+    const std::set<int> ca = curves.at(result.quads.locations[static_cast<std::size_t>(a)]);
+    const std::set<int> cb = curves.at(result.quads.locations[static_cast<std::size_t>(b)]);
+    for (int c : ca)
+      if (cb.count(c)) {
+        queries.push_back({c, out.points[static_cast<std::size_t>(node)]});
+        moved.push_back(node);
+        break;
+      }
+  }
+  if (queries.empty()) return out;
+  const std::vector<Vec3> on_curves = io::closest_points_on_cad_curves(cad_path, queries);
+  for (std::size_t i = 0; i < moved.size(); ++i) out.points[static_cast<std::size_t>(moved[i])] = on_curves[i];
+  out.cad_nodes = moved.size();
+  for (std::size_t i = 0; i < moved.size(); ++i)  // the corners may have moved by the triangulation's sagitta
+    if (moved[i] < out.first_edge_node)
+      out.max_move = std::max(out.max_move, (on_curves[i] - result.quads.points[static_cast<std::size_t>(moved[i])]).norm());
+  return out;
+}
 
-io::OutputMesh output_mesh(const QuadMeshResult& result) {
+io::OutputMesh output_mesh(const QuadMeshResult& result, const QuadraticQuads* quadratic) {
   const LatticeQuads& q = result.quads;
   io::OutputMesh out;
   out.points = q.points;
   for (const auto& quad : q.quads) out.faces.push_back({quad[0], quad[1], quad[2], quad[3]});
+  std::map<std::pair<int, int>, int> node_of_edge;
+  if (quadratic) {
+    out.points = quadratic->points;
+    out.faces = quadratic->elements;
+    for (std::size_t k = 0; k < quadratic->edge_of_node.size(); ++k)
+      node_of_edge[{quadratic->edge_of_node[k][0], quadratic->edge_of_node[k][1]}] =
+          quadratic->first_edge_node + static_cast<int>(k);
+  }
   // boundary edges: used by one quad, in the quad's direction
   std::map<std::pair<int, int>, int> uses;
   for (const auto& quad : q.quads)
     for (int i = 0; i < 4; ++i) ++uses[{quad[static_cast<std::size_t>(i)], quad[static_cast<std::size_t>((i + 1) % 4)]}];
   const CadCurves& cad = result.surface.cad;
-  std::map<std::pair<int, int>, int> curve_of_edge;
-  std::multimap<int, int> curves_of_vertex;
-  for (const CurveEdge& e : cad.edges) {
-    curve_of_edge[{std::min(e.a, e.b), std::max(e.a, e.b)}] = e.curve;
-    curves_of_vertex.insert({e.a, e.curve});
-    curves_of_vertex.insert({e.b, e.curve});
-  }
+  const CurveLookup curves = curve_lookup(cad);
   std::map<int, std::string> group_of_curve;
   for (const PhysicalCurveGroup& g : cad.groups)
     for (int c : g.curves) group_of_curve[c] = g.name.empty() ? fmt::format("curve_group_{}", g.tag) : g.name;
@@ -65,8 +112,8 @@ io::OutputMesh output_mesh(const QuadMeshResult& result) {
       if (loop < 0) loop = result.boundary_loop_of_point[static_cast<std::size_t>(b)];
       std::string name = fmt::format("boundary_{}", std::max(loop, 0));
       if (!group_of_curve.empty()) {
-        const std::set<int> ca = curves_at(q.locations[static_cast<std::size_t>(a)], curve_of_edge, curves_of_vertex);
-        const std::set<int> cb = curves_at(q.locations[static_cast<std::size_t>(b)], curve_of_edge, curves_of_vertex);
+        const std::set<int> ca = curves.at(q.locations[static_cast<std::size_t>(a)]);
+        const std::set<int> cb = curves.at(q.locations[static_cast<std::size_t>(b)]);
         for (int c : ca)
           if (cb.count(c) && group_of_curve.count(c)) {
             name = group_of_curve[c];
@@ -78,6 +125,7 @@ io::OutputMesh output_mesh(const QuadMeshResult& result) {
         order.push_back(name);
       }
       groups[name].edges.push_back({a, b});
+      if (quadratic) groups[name].mids.push_back(node_of_edge.at({std::min(a, b), std::max(a, b)}));
     }
   std::sort(order.begin(), order.end());
   for (const std::string& name : order) out.line_groups.push_back(std::move(groups[name]));
@@ -92,7 +140,7 @@ io::OutputMesh output_mesh(const QuadMeshResult& result) {
 }
 
 MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, const MeshOptions& options,
-                      double seconds) {
+                      double seconds, const QuadraticQuads* quadratic) {
   MeshSummary s;
   s.input = options.input;
   const std::vector<char> on_boundary =
@@ -110,6 +158,17 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
   j["input"] = options.input;
   j["output"] = options.output;
   j["quality"] = quality_json(s.quality);
+  if (quadratic) {
+    s.curved = curved_jacobians(quadratic->points, quadratic->elements);
+    s.nodes_per_quad = quadratic->elements.empty() ? 4 : static_cast<int>(quadratic->elements.front().size());
+    j["quality"]["min_jacobian_ratio"] = s.curved->min_ratio;
+    j["quality"]["non_positive_jacobian_elements"] = s.curved->non_positive;
+  }
+  j["order"] = {{"order", quadratic ? 2 : 1},
+                {"nodes_per_quad", s.nodes_per_quad},
+                {"boundary_nodes", quadratic ? quadratic->boundary_nodes.size() : 0},
+                {"nodes_on_cad_curves", quadratic ? quadratic->cad_nodes : 0},
+                {"max_node_offset", quadratic ? quadratic->max_move : 0.0}};
   j["expected"] = {{"irregular_interior", s.expected_irregular_interior},
                    {"boundary_zeros", s.expected_irregular_boundary},
                    {"euler_characteristic", s.input_euler_characteristic},
@@ -229,6 +288,9 @@ void print_summary(const MeshSummary& s) {
   fmt::print("shape               angles {:.1f}-{:.1f} deg, min warpage {:.3f}, max aspect ratio {:.2f}, max skew "
              "{:.3f}, max taper {:.3f} (Verdict)\n",
              q.min_angle, q.max_angle, q.min_warpage, q.aspect_ratio_max, q.skew_max, q.taper_max);
+  if (s.curved)
+    fmt::print("curved quads        {} nodes each, min Jacobian ratio {:.3f} ({} elements <= 0)\n", s.nodes_per_quad,
+               s.curved->min_ratio, s.curved->non_positive);
   fmt::print("angle deviation     mean {:.2f} deg, p99 {:.2f} deg\n", q.angle_dev_mean, q.angle_dev_p99);
   fmt::print("topology            chi {} (input {}), {} boundary loops (input {})\n", q.euler_characteristic,
              s.input_euler_characteristic, q.boundary_loops, s.input_boundary_loops);
