@@ -23,14 +23,24 @@ struct PointGroup {
   std::vector<int> points;
 };
 
+/// A named set of faces written as a physical surface of its own (one part of an
+/// assembly).
+struct SurfaceGroup {
+  std::string name;
+  std::vector<int> faces;  ///< face indices
+};
+
 /// What gets written: points, faces of 3 or 4 corners (counter-clockwise seen from
-/// the surface's front), line and point groups, and the name of the surface's group.
+/// the surface's front), line and point groups, and the name of the surface's group;
+/// or, when surface_groups is not empty, one physical surface per surface group
+/// (every face in exactly one of them).
 struct OutputMesh {
   std::vector<Vec3> points;
   std::vector<std::vector<int>> faces;
   std::vector<LineGroup> line_groups;
   std::vector<PointGroup> point_groups;
   std::string surface_group = "surface";
+  std::vector<SurfaceGroup> surface_groups;
 };
 
 struct WriteOptions {

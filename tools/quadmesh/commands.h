@@ -39,6 +39,12 @@ struct MeshOptions {
   double max_deviation = 0.0;           ///< --max-deviation D; 0: half the size; < 0: off
   double max_deviation_relative = 0.0;  ///< --max-deviation P%: P/100 of the diagonal
   double msh_version = 4.1;
+  /// --each-component: every part (CAD physical surface group or connected set
+  /// of triangles) meshed on its own, one physical surface each
+  bool each_component = false;
+  /// --skip-unsupported: with --each-component, leave out the parts the method
+  /// cannot take (listed with their reason) instead of failing
+  bool skip_unsupported = false;
 };
 
 struct FormsOptions {

@@ -183,6 +183,12 @@ int run(int argc, char** argv) {
   mesh_cmd->add_option("--report", mesh.report, "Write a JSON report (quality, zeros, quantization, timings)");
   checked(mesh_cmd->add_option("--msh-version", mesh.msh_version, "MSH output version: 4.1 or 2.2"),
           msh_version());
+  mesh_cmd->add_flag("--each-component", mesh.each_component,
+                     "Mesh every part (CAD physical surface group or connected set of triangles) on its own, at "
+                     "the whole model's size, into one output with a physical surface per part");
+  mesh_cmd->add_flag("--skip-unsupported", mesh.skip_unsupported,
+                     "With --each-component: leave out the parts the method cannot take (a disk, a sphere, a "
+                     "non-manifold part), listed with their reason, instead of failing");
 
   QualityOptions quality;
   CLI::App* quality_cmd =
