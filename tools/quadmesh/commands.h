@@ -72,6 +72,17 @@ struct CompareOptions {
   std::string gmsh = "gmsh";   ///< --gmsh: the Gmsh program the baselines run
 };
 
+struct BatchOptions {
+  std::string list;          ///< LIST: a CSV (file,size,options) or a folder of inputs
+  std::string out_dir;       ///< --out: the rows' outputs, summary.json, summary.md
+  int jobs = 1;              ///< --jobs: rows at once
+  std::string size;          ///< --size: the rows' size where LIST gives none ("" : mesh's default)
+  double timeout = 600.0;    ///< --timeout: seconds each row may run
+  std::size_t row = 0;       ///< --row K: only row K (from 1); 0: all, then the summary
+  std::string collect_dir;   ///< --collect DIR: the summary of the rows DIR holds
+  bool prepare = false;      ///< --prepare: write DIR/list.json, print the row count, run nothing
+};
+
 struct RenderOptions {
   std::string input;
   std::string output;          ///< -o: the picture (.svg)
@@ -87,6 +98,7 @@ int run_mesh(const MeshOptions& mesh, const CommonOptions& common);
 int run_forms(const FormsOptions& forms, const CommonOptions& common);
 int run_quality(const QualityOptions& quality, const CommonOptions& common);
 int run_compare(const CompareOptions& compare, const CommonOptions& common);
+int run_batch(const BatchOptions& batch, const CommonOptions& common);
 int run_render(const RenderOptions& render, const CommonOptions& common);
 
 }  // namespace qm::tools
