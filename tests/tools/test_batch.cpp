@@ -18,6 +18,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <thread>
 
 using namespace qm;
@@ -198,7 +199,8 @@ TEST_CASE("batch over the shared meshes and the examples, two at a time: every r
                                     fs::path(test::example("annulus.geo")).parent_path().string()}) {
     std::vector<std::string> files;
     for (const auto& entry : fs::directory_iterator(folder))
-      if (entry.is_regular_file() && entry.path().extension() != ".md") files.push_back(entry.path().string());
+      if (entry.is_regular_file() && std::set<std::string>{".obj", ".off", ".stl", ".geo"}.count(entry.path().extension().string()))
+        files.push_back(entry.path().string());
     std::sort(files.begin(), files.end());
     for (const std::string& file : files) {
       text += fmt::format("\"{}\",5%,\n", file);

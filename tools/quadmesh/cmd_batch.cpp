@@ -124,7 +124,9 @@ RowResult run_row(const fs::path& dir, const BatchRow& row, double timeout) {
   child.working_dir = dir.string();
   child.crash_on_purpose = crash_requested("QUADMESH_BATCH_CRASH", row.name);
   child.die_with_parent = true;
-  std::vector<std::string> argv = {io::own_executable()};
+  // this very program, even when its file is replaced while the batch runs (a
+  // rebuild, an upgrade): every row of a run meshes with one binary
+  std::vector<std::string> argv = {"/proc/self/exe"};
   for (const std::string& a : row_arguments(row)) argv.push_back(a);
   const io::ChildResult ended = io::run_child(argv, child);
   const Json report = ended.status == io::ChildStatus::ok ? read_json(dir / files.report) : Json();
@@ -225,10 +227,13 @@ int run_batch(const BatchOptions& options, const CommonOptions& common) {
   if (options.row > rows.size())
     throw UsageError(fmt::format("--row {}: {} has {} rows", options.row, options.list, rows.size()));
   make_folders(dir);
+  // --row K: the array's tasks start together, on several hosts of a shared file
+  // system; list.json comes from --prepare (scripts/cluster), or the first task
+  const bool write_list = options.row == 0 || !fs::exists(dir / "list.json");
   try {
-    write_text_atomically(dir / "list.json", dump(rows_json(rows)));
+    if (write_list) write_text_atomically(dir / "list.json", dump(rows_json(rows)));
   } catch (const Error& e) {
-    throw UsageError(e.what());
+    if (options.row == 0) throw UsageError(e.what());  // a task that lost the race uses the other's
   }
   if (options.prepare) {
     fmt::print("{}\n", rows.size());
