@@ -71,8 +71,12 @@ void prepare_child(int log_fd, const char* working_dir, std::uint64_t memory_lim
 
 /// The child's side of run_child: prepare, then exec.
 [[noreturn]] void become_child(char* const* argv, int log_fd, const char* working_dir,
-                               std::uint64_t memory_limit, bool crash_on_purpose) {
+                               std::uint64_t memory_limit, bool crash_on_purpose, pid_t die_with) {
   prepare_child(log_fd, working_dir, memory_limit);
+  if (die_with > 0) {
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != die_with) _exit(1);  // the parent ended before the line above
+  }
   if (crash_on_purpose) {
     signal(SIGSEGV, SIG_DFL);
     raise(SIGSEGV);
@@ -160,11 +164,12 @@ ChildResult run_child(const std::vector<std::string>& argv, const ChildOptions& 
     log_fd = open(options.log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   const char* working_dir = options.working_dir.empty() ? nullptr : options.working_dir.c_str();
 
+  const pid_t die_with = options.die_with_parent ? getpid() : 0;
   const Clock::time_point start = Clock::now();
   const pid_t pid = fork();
   if (pid == 0)
     become_child(pointers.data(), log_fd, working_dir, options.memory_limit_bytes,
-                 options.crash_on_purpose);
+                 options.crash_on_purpose, die_with);
   return after_fork(pid, log_fd, start, options);
 }
 

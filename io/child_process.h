@@ -51,6 +51,10 @@ struct ChildOptions {
   /// Test hook: the child raises SIGSEGV instead of running the program, as a
   /// crashing mesher would.
   bool crash_on_purpose = false;
+  /// run_child: the child gets SIGKILL when the thread that started it ends (this
+  /// process killed, as a batch that is stopped and later resumed), so no orphan
+  /// keeps writing into the outputs. run_in_child always does this.
+  bool die_with_parent = false;
 };
 
 struct ChildResult {

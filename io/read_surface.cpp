@@ -144,6 +144,28 @@ void collect_cad_curves(const std::unordered_map<std::size_t, int>& node_index, 
   }
 }
 
+/// The physical surface groups of the model loaded in Gmsh, with the element tags
+/// of their faces (the soup's triangle labels).
+void collect_surface_groups(CadCurves& cad) {
+  std::vector<std::pair<int, int>> groups;
+  gmsh::model::getPhysicalGroups(groups, 2);
+  for (const auto& [dim, tag] : groups) {
+    PhysicalSurfaceGroup group;
+    group.tag = tag;
+    gmsh::model::getPhysicalName(dim, tag, group.name);
+    std::vector<int> surfaces;
+    gmsh::model::getEntitiesForPhysicalGroup(dim, tag, surfaces);
+    for (int surface : surfaces) {
+      std::vector<int> types;
+      std::vector<std::vector<std::size_t>> element_tags, element_nodes;
+      gmsh::model::mesh::getElements(types, element_tags, element_nodes, dim, surface);
+      for (const auto& tags : element_tags)
+        for (std::size_t e : tags) group.elements.push_back(static_cast<std::int64_t>(e));
+    }
+    cad.surface_groups.push_back(std::move(group));
+  }
+}
+
 /// The surface elements (and CAD curves) of the model loaded in Gmsh.
 SurfaceFile collect_surface(const std::string& path, Format format) {
   SurfaceFile file;
@@ -169,6 +191,7 @@ SurfaceFile collect_surface(const std::string& path, Format format) {
     }
   }
   collect_cad_curves(nodes.used(), file.soup.cad);
+  collect_surface_groups(file.soup.cad);
   return file;
 }
 

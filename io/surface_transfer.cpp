@@ -106,6 +106,13 @@ std::string encode_surface(const SurfaceFile& file) {
     w.put<std::uint64_t>(g.curves.size());
     for (int c : g.curves) w.put<std::int32_t>(c);
   }
+  w.put<std::uint64_t>(soup.cad.surface_groups.size());
+  for (const PhysicalSurfaceGroup& g : soup.cad.surface_groups) {
+    w.put<std::int32_t>(g.tag);
+    w.put_text(g.name);
+    w.put<std::uint64_t>(g.elements.size());
+    for (std::int64_t e : g.elements) w.put<std::int64_t>(e);
+  }
   w.raw(end_mark);
   return w.take();
 }
@@ -161,6 +168,13 @@ std::optional<std::variant<SurfaceFile, Error>> decode_result(const std::string&
     g.name = r.text();
     g.curves.resize(r.count(sizeof(std::int32_t)));
     for (int& c : g.curves) c = r.get<std::int32_t>();
+  }
+  soup.cad.surface_groups.resize(r.count(sizeof(std::int32_t) + 2 * sizeof(std::uint64_t)));
+  for (PhysicalSurfaceGroup& g : soup.cad.surface_groups) {
+    g.tag = r.get<std::int32_t>();
+    g.name = r.text();
+    g.elements.resize(r.count(sizeof(std::int64_t)));
+    for (std::int64_t& e : g.elements) e = r.get<std::int64_t>();
   }
   if (!r.expect(end_mark) || !r.at_end() || !r.ok()) return std::nullopt;
   return std::variant<SurfaceFile, Error>(std::move(file));

@@ -7,7 +7,8 @@
 //             u64 n, n x (f64 x, f64 y, f64 z), u64 n, n x i64 point label,
 //             u64 n, n x (i32 a, i32 b, i32 c), u64 n, n x i64 triangle label,
 //             u64 n, n x (i32 a, i32 b, i32 curve),
-//             u64 n, n x (i32 tag, u64 len, name bytes, u64 m, m x i32 curve)
+//             u64 n, n x (i32 tag, u64 len, name bytes, u64 m, m x i32 curve),
+//             u64 n, n x (i32 tag, u64 len, name bytes, u64 m, m x i64 element)
 //   kind 'E': i32 error code, u64 len, message bytes
 //   "END"
 // in the machine's byte order. Anything else (a child killed while writing) does

@@ -51,30 +51,75 @@ void write_with_gmsh(const std::string& path, const OutputMesh& mesh, const Writ
 
 }  // namespace
 
-std::vector<std::size_t> add_to_gmsh_model(const OutputMesh& mesh) {
-  gmsh::model::add("quadmesh");
-  const int surface = gmsh::model::addDiscreteEntity(2);
-  std::vector<std::size_t> node_tags(mesh.points.size());
-  std::iota(node_tags.begin(), node_tags.end(), std::size_t{1});
-  std::vector<double> coords;
-  coords.reserve(3 * mesh.points.size());
-  for (const Vec3& p : mesh.points) coords.insert(coords.end(), {p.x(), p.y(), p.z()});
-  gmsh::model::mesh::addNodes(2, surface, node_tags, coords);
+namespace {
 
-  // faces are numbered in input order: element tag of face i is face_tags[i]
-  std::vector<std::size_t> face_tags(mesh.faces.size());
-  std::size_t next_element = 1;
+/// Adds the points used by `faces` that no entity holds yet (`added`) as nodes of
+/// `entity` (node tag = point index + 1); every point when `faces` is null.
+void add_nodes(int entity, const OutputMesh& mesh, const std::vector<int>* faces, std::vector<char>& added) {
+  std::vector<std::size_t> tags;
+  std::vector<double> coords;
+  const auto add = [&](int v) {
+    if (added[static_cast<std::size_t>(v)]) return;
+    added[static_cast<std::size_t>(v)] = 1;
+    const Vec3& p = mesh.points[static_cast<std::size_t>(v)];
+    tags.push_back(static_cast<std::size_t>(v) + 1);
+    coords.insert(coords.end(), {p.x(), p.y(), p.z()});
+  };
+  if (faces == nullptr)
+    for (std::size_t v = 0; v < mesh.points.size(); ++v) add(static_cast<int>(v));
+  else
+    for (int f : *faces)
+      for (int v : mesh.faces[static_cast<std::size_t>(f)]) add(v);
+  if (!tags.empty()) gmsh::model::mesh::addNodes(2, entity, tags, coords);
+}
+
+/// Adds `faces` (all when null) as elements of `entity`, triangles first, numbering
+/// them from next_element (then quads, then 8- and 9-node quads); records each face's
+/// element tag in face_tags.
+void add_faces(int entity, const OutputMesh& mesh, const std::vector<int>* faces, std::size_t& next_element,
+               std::vector<std::size_t>& face_tags) {
+  std::vector<int> all;
+  if (faces == nullptr) {
+    all.resize(mesh.faces.size());
+    std::iota(all.begin(), all.end(), 0);
+    faces = &all;
+  }
   for (std::size_t corners : {std::size_t{3}, std::size_t{4}, std::size_t{8}, std::size_t{9}}) {
     std::vector<std::size_t> tags, nodes;
-    for (std::size_t i = 0; i < mesh.faces.size(); ++i) {
-      const auto& f = mesh.faces[i];
+    for (int i : *faces) {
+      const auto& f = mesh.faces[static_cast<std::size_t>(i)];
       gmsh_face_type(f.size());
       if (f.size() != corners) continue;
-      face_tags[i] = next_element;
+      face_tags[static_cast<std::size_t>(i)] = next_element;
       tags.push_back(next_element++);
       for (int v : f) nodes.push_back(static_cast<std::size_t>(v) + 1);
     }
-    if (!tags.empty()) gmsh::model::mesh::addElementsByType(surface, gmsh_face_type(corners), tags, nodes);
+    if (!tags.empty()) gmsh::model::mesh::addElementsByType(entity, gmsh_face_type(corners), tags, nodes);
+  }
+}
+
+}  // namespace
+
+std::vector<std::size_t> add_to_gmsh_model(const OutputMesh& mesh) {
+  gmsh::model::add("quadmesh");
+  // faces are numbered in input order (per surface group): element tag of face i is face_tags[i]
+  std::vector<std::size_t> face_tags(mesh.faces.size());
+  std::size_t next_element = 1;
+  std::vector<char> added(mesh.points.size(), 0);
+  std::vector<std::pair<int, std::string>> surfaces;  // entity, physical name
+  if (mesh.surface_groups.empty()) {
+    const int surface = gmsh::model::addDiscreteEntity(2);
+    add_nodes(surface, mesh, nullptr, added);
+    add_faces(surface, mesh, nullptr, next_element, face_tags);
+    surfaces.emplace_back(surface, mesh.surface_group);
+  } else {
+    for (const SurfaceGroup& group : mesh.surface_groups) {
+      const int surface = gmsh::model::addDiscreteEntity(2);
+      add_nodes(surface, mesh, &group.faces, added);
+      add_faces(surface, mesh, &group.faces, next_element, face_tags);
+      surfaces.emplace_back(surface, group.name);
+    }
+    add_nodes(surfaces.front().first, mesh, nullptr, added);  // points no face uses
   }
   for (const LineGroup& group : mesh.line_groups) {
     const int curve = gmsh::model::addDiscreteEntity(1);
@@ -102,8 +147,10 @@ std::vector<std::size_t> add_to_gmsh_model(const OutputMesh& mesh) {
     const int physical = gmsh::model::addPhysicalGroup(0, entities);
     gmsh::model::setPhysicalName(0, physical, group.name);
   }
-  const int physical = gmsh::model::addPhysicalGroup(2, {surface});
-  gmsh::model::setPhysicalName(2, physical, mesh.surface_group);
+  for (const auto& [surface, name] : surfaces) {
+    const int physical = gmsh::model::addPhysicalGroup(2, {surface});
+    gmsh::model::setPhysicalName(2, physical, name);
+  }
   return face_tags;
 }
 

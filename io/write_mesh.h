@@ -24,16 +24,26 @@ struct PointGroup {
   std::vector<int> points;
 };
 
+/// A named set of faces written as a physical surface of its own (one part of an
+/// assembly).
+struct SurfaceGroup {
+  std::string name;
+  std::vector<int> faces;  ///< face indices
+};
+
 /// What gets written: points, faces of 3 or 4 corners (counter-clockwise seen from
 /// the surface's front) or quadratic quads of 8 or 9 nodes (corners, then the nodes
 /// of the edges 0-1, 1-2, 2-3, 3-0, then the inside node), line and point groups,
-/// and the name of the surface's group.
+/// and the name of the surface's group; or, when surface_groups is not empty, one
+/// physical surface per surface group (every face in exactly one of them; Gmsh
+/// formats only: the solver decks put every face in one element set).
 struct OutputMesh {
   std::vector<Vec3> points;
   std::vector<std::vector<int>> faces;
   std::vector<LineGroup> line_groups;
   std::vector<PointGroup> point_groups;
   std::string surface_group = "surface";
+  std::vector<SurfaceGroup> surface_groups;
 };
 
 struct WriteOptions {

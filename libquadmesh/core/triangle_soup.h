@@ -28,12 +28,23 @@ struct PhysicalCurveGroup {
   std::vector<int> curves;
 };
 
-/// What a CAD input tells about its boundary: for every mesh edge on a CAD
-/// curve, the curve's tag, and the physical groups of curves. Empty for
-/// discrete inputs (OBJ, OFF, PLY, STL, MSH without geometry).
+/// A physical group of CAD surfaces (Gmsh physical group of dimension 2): the
+/// element tags of its triangles, which are the soup's triangle labels.
+struct PhysicalSurfaceGroup {
+  int tag = -1;
+  std::string name;  ///< may be empty: the group is then known by its tag
+  std::vector<std::int64_t> elements;
+};
+
+/// What a CAD input tells about its boundary and its parts: for every mesh edge
+/// on a CAD curve, the curve's tag, the physical groups of curves, and the
+/// physical groups of surfaces (`quadmesh mesh --each-component` names its parts
+/// after them). Empty for discrete inputs (OBJ, OFF, PLY, STL, MSH without
+/// geometry).
 struct CadCurves {
   std::vector<CurveEdge> edges;
   std::vector<PhysicalCurveGroup> groups;
+  std::vector<PhysicalSurfaceGroup> surface_groups;
 };
 
 /// A triangle soup with the file's own numbering kept for messages.

@@ -211,7 +211,7 @@ TEST_CASE("messages: --form counts from 1, unknown commands are named, quality r
     const Run run = quadmesh(args);
     CHECK(run.status == 2);
     CHECK(run.err ==
-          "quadmesh: error: unknown command 'frobnicate' (commands: info, forms, mesh, quality, compare, render)\n");
+          "quadmesh: error: unknown command 'frobnicate' (commands: info, forms, mesh, quality, compare, batch, render)\n");
   }
 
   // NaN coordinates and duplicate faces: info refuses them (exit 3); quality too,

@@ -10,6 +10,7 @@
 #include "io/file_format.h"
 #include "io/read_polygon_mesh.h"
 #include "io/write_mesh.h"
+#include "tools/common/crash_hook.h"
 #include "tools/common/exit_codes.h"
 #include "tools/common/input_surface.h"
 #include "tools/common/output_paths.h"
@@ -35,16 +36,6 @@ namespace qm::tools {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// The methods named in QUADMESH_COMPARE_CRASH (comma-separated).
-bool crash_requested(const std::string& name) {
-  const char* value = std::getenv("QUADMESH_COMPARE_CRASH");
-  if (value == nullptr) return false;
-  std::stringstream list(value);
-  for (std::string item; std::getline(list, item, ',');)
-    if (item == name) return true;
-  return false;
-}
 
 void write_text(const fs::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
@@ -130,7 +121,7 @@ MethodRun run_method(const Method& method, const fs::path& dir, const TriangleSo
   child.timeout_seconds = timeout;
   child.log_path = (dir / (method.name + ".log")).string();
   child.working_dir = dir.string();
-  child.crash_on_purpose = crash_requested(method.name);
+  child.crash_on_purpose = crash_requested("QUADMESH_COMPARE_CRASH", method.name);
   const ChildResult result = run_child(method.argv, child);
   run.status = result.status;
   run.seconds = result.seconds;

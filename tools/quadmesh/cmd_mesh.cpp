@@ -9,6 +9,7 @@
 #include "tools/common/output_paths.h"
 #include "tools/common/usage_error.h"
 #include "tools/quadmesh/commands.h"
+#include "tools/quadmesh/mesh_steps.h"
 #include "tools/quadmesh/quad_output.h"
 
 #include <fmt/format.h>
@@ -22,10 +23,14 @@ namespace qm::tools {
 
 namespace {
 int nodes_per_quad(const MeshOptions& options) { return options.order == 1 ? 4 : options.complete ? 9 : 8; }
+}  // namespace
 
-/// Before any work: -o and --report writable, and neither the input nor each
-/// other (README "Exit codes": 2).
-void check_files(const MeshOptions& options) {
+void check_mesh_files(const MeshOptions& options) {
+  if (options.skip_unsupported && !options.each_component)
+    throw UsageError("--skip-unsupported applies to --each-component (the parts of an assembly)");
+  if (options.each_component && options.order != 1)
+    throw UsageError("--order 2 is not written with --each-component yet: mesh the parts one by one for quadratic "
+                     "quads");
   check_output_file({"-o", options.output});
   check_output_file({"--report", options.report});
   check_distinct({{"the input", options.input}, {"-o", options.output}, {"--report", options.report}});
@@ -47,8 +52,6 @@ void check_files(const MeshOptions& options) {
                                  options.quads, options.max_quads));
 }
 
-/// The work limit, once the input is read and before the forms: the quad count
-/// --size implies (area / size^2, as mesh_quads scales h) against --max-quads.
 void check_quad_estimate(const MeshOptions& options, const TriangleSoup& soup) {
   if (options.quads > 0) return;  // checked with the files
   QuadMeshOptions asked_for;
@@ -64,10 +67,6 @@ void check_quad_estimate(const MeshOptions& options, const TriangleSoup& soup) {
                                asked, std::min(estimate, 1e300), options.max_quads));
 }
 
-/// CAD input is triangulated at a third of the quad size while it is read: a
-/// size far too small would keep Gmsh meshing for ever before the estimate above
-/// is made. A coarse triangulation first (a tenth of the diagonal) gives the
-/// area for the same estimate (`read`: the options of the real reading).
 void check_cad_quad_estimate(const MeshOptions& options, const io::ReadOptions& read) {
   if (!io::is_cad(io::format_of(options.input)) || (options.size <= 0 && options.size_relative <= 0)) return;
   io::ReadOptions coarse = read;
@@ -76,6 +75,8 @@ void check_cad_quad_estimate(const MeshOptions& options, const io::ReadOptions& 
   coarse.quad_size_relative = 0.1;
   check_quad_estimate(options, io::read_surface(options.input, coarse).soup);
 }
+
+namespace {
 
 /// --form K must name one of the surface's symmetric forms (the doubled surface's
 /// genus of them), said as the command line counts them, from 1; --coeffs must
@@ -144,8 +145,8 @@ LongestEdge longest_quad_edge(const LatticeQuads& quads, const Vec3& near, doubl
   return longest;
 }
 
-/// A quad mesh whose topology differs from the input's is broken output: refuse
-/// to write it (exit 1), naming where the parameterization failed.
+}  // namespace
+
 void require_conforming(const MeshSummary& s, const QuadMeshResult& r) {
   const QuadQuality& q = s.quality;
   if (q.euler_characteristic == s.input_euler_characteristic && q.boundary_loops == s.input_boundary_loops &&
@@ -171,6 +172,8 @@ void require_conforming(const MeshSummary& s, const QuadMeshResult& r) {
                           s.input_boundary_loops, r.extraction.bad_triangles, r.extraction.incomplete_cells, where,
                           cause, cones));
 }
+
+namespace {
 
 /// A curved quad whose Jacobian determinant is <= 0 somewhere is rejected by every
 /// solver: refuse to write the mesh (exit 1), naming where the worst is.
@@ -253,20 +256,7 @@ void warn_if_far(const MeshSummary& s, const QuadMeshResult& r, double diagonal)
 }
 }  // namespace
 
-int run_mesh(const MeshOptions& options, const CommonOptions& common) {
-  check_files(options);
-  const Progress progress(common.quiet);
-  io::ReadOptions read;
-  read.cad_mesh_size = common.cad_mesh_size;
-  read.quad_size = options.size;
-  read.quad_size_relative = options.size_relative;
-  check_cad_quad_estimate(options, read);
-  const InputSurface in = load_input_surface(options.input, read, common.largest_component, progress);
-  require_supported(in.surface);
-  check_form_choice(options, in.surface);
-  check_quad_estimate(options, in.surface.soup);
-  progress.stage(assess_applicability(in.surface).reason);
-
+QuadMeshOptions quad_mesh_options(const MeshOptions& options) {
   QuadMeshOptions mesher;
   mesher.form = options.form;
   mesher.coefficients = options.coefficients;
@@ -281,8 +271,37 @@ int run_mesh(const MeshOptions& options, const CommonOptions& common) {
   mesher.tip_angle_deg = options.tip_angle_deg;
   mesher.max_deviation = options.max_deviation;
   mesher.max_deviation_relative = options.max_deviation_relative;
+  return mesher;
+}
+
+void warn_about_result(const MeshSummary& summary, const QuadMeshResult& result, double diagonal) {
+  warn_if_cells_dropped(result);
+  if (!result.cone_route_failure.empty())
+    fmt::print(stderr, "warning: the quads miss the size band [0.5, 2] x --size ({:.0f}% in it) and quarter-turn "
+                       "cones did not help: {}; the Abel result is kept\n",
+               100 * result.abel_size_band_share, result.cone_route_failure);
+  warn_if_stray_boundary(result);
+  warn_if_inverted(summary, result);
+  warn_if_far(summary, result, diagonal);
+}
+
+int run_mesh(const MeshOptions& options, const CommonOptions& common) {
+  if (options.each_component) return run_mesh_each_component(options, common);
+  check_mesh_files(options);
+  const Progress progress(common.quiet);
+  io::ReadOptions read;
+  read.cad_mesh_size = common.cad_mesh_size;
+  read.quad_size = options.size;
+  read.quad_size_relative = options.size_relative;
+  check_cad_quad_estimate(options, read);
+  const InputSurface in = load_input_surface(options.input, read, common.largest_component, progress);
+  require_supported(in.surface);
+  check_form_choice(options, in.surface);
+  check_quad_estimate(options, in.surface.soup);
+  progress.stage(assess_applicability(in.surface).reason);
+
   const QuadMeshResult result =
-      mesh_quads(in.surface.soup, mesher, [&](const std::string& stage) { progress.stage(stage); });
+      mesh_quads(in.surface.soup, quad_mesh_options(options), [&](const std::string& stage) { progress.stage(stage); });
 
   std::optional<QuadraticQuads> quadratic;
   if (options.order == 2) {
@@ -297,14 +316,7 @@ int run_mesh(const MeshOptions& options, const CommonOptions& common) {
   progress.stage(fmt::format("writing {}", options.output));
   write_outputs(options, result, summary, quadratic ? &*quadratic : nullptr);
   print_summary(summary);
-  warn_if_cells_dropped(result);
-  if (!result.cone_route_failure.empty())
-    fmt::print(stderr, "warning: the quads miss the size band [0.5, 2] x --size ({:.0f}% in it) and quarter-turn "
-                       "cones did not help: {}; the Abel result is kept\n",
-               100 * result.abel_size_band_share, result.cone_route_failure);
-  warn_if_stray_boundary(result);
-  warn_if_inverted(summary, result);
-  warn_if_far(summary, result, bounding_box_diagonal(in.surface.soup.points, in.surface.soup.triangles));
+  warn_about_result(summary, result, bounding_box_diagonal(in.surface.soup.points, in.surface.soup.triangles));
   return exit_ok;
 }
 

@@ -42,6 +42,12 @@ struct MeshOptions {
   int order = 1;             ///< --order: 1 linear quads, 2 quadratic
   bool complete = false;     ///< --complete: 9-node quadratic quads
   std::string element_type;  ///< --element-type: solver decks (io/deck_element.h); empty: from the geometry
+  /// --each-component: every part (CAD physical surface group or connected set
+  /// of triangles) meshed on its own, one physical surface each
+  bool each_component = false;
+  /// --skip-unsupported: with --each-component, leave out the parts the method
+  /// cannot take (listed with their reason) instead of failing
+  bool skip_unsupported = false;
 };
 
 struct FormsOptions {
@@ -71,6 +77,17 @@ struct CompareOptions {
   std::string gmsh = "gmsh";   ///< --gmsh: the Gmsh program the baselines run
 };
 
+struct BatchOptions {
+  std::string list;          ///< LIST: a CSV (file,size,options) or a folder of inputs
+  std::string out_dir;       ///< --out: the rows' outputs, summary.json, summary.md
+  int jobs = 1;              ///< --jobs: rows at once
+  std::string size;          ///< --size: the rows' size where LIST gives none ("" : mesh's default)
+  double timeout = 600.0;    ///< --timeout: seconds each row may run
+  std::size_t row = 0;       ///< --row K: only row K (from 1); 0: all, then the summary
+  std::string collect_dir;   ///< --collect DIR: the summary of the rows DIR holds
+  bool prepare = false;      ///< --prepare: write DIR/list.json, print the row count, run nothing
+};
+
 struct RenderOptions {
   std::string input;
   std::string output;          ///< -o: the picture (.svg)
@@ -86,6 +103,7 @@ int run_mesh(const MeshOptions& mesh, const CommonOptions& common);
 int run_forms(const FormsOptions& forms, const CommonOptions& common);
 int run_quality(const QualityOptions& quality, const CommonOptions& common);
 int run_compare(const CompareOptions& compare, const CommonOptions& common);
+int run_batch(const BatchOptions& batch, const CommonOptions& common);
 int run_render(const RenderOptions& render, const CommonOptions& common);
 
 }  // namespace qm::tools

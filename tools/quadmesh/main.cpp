@@ -189,6 +189,12 @@ int run(int argc, char** argv) {
   mesh_cmd->add_option("--element-type", mesh.element_type,
                        "Solver decks (.inp .bdf .unv): the element type (CPS4, S8R, CQUAD8, ..., or plane-stress, "
                        "plane-strain, shell; default: plane stress in the z = 0 plane, else shell)");
+  mesh_cmd->add_flag("--each-component", mesh.each_component,
+                     "Mesh every part (CAD physical surface group or connected set of triangles) on its own, at "
+                     "the whole model's size, into one output with a physical surface per part");
+  mesh_cmd->add_flag("--skip-unsupported", mesh.skip_unsupported,
+                     "With --each-component: leave out the parts the method cannot take (a disk, a sphere, a "
+                     "non-manifold part), listed with their reason, instead of failing");
 
   QualityOptions quality;
   CLI::App* quality_cmd =
@@ -220,6 +226,24 @@ int run(int argc, char** argv) {
           seconds());
   compare_cmd->add_option("--gmsh", compare.gmsh, "The Gmsh program of the baselines (default: gmsh)");
 
+  BatchOptions batch;
+  CLI::App* batch_cmd = app.add_subcommand(
+      "batch", "Mesh every part of a list (CSV or folder), each in a child process, N at once; resumable");
+  batch_cmd->add_option("LIST", batch.list, "CSV of file,size,options rows, or a folder of input files");
+  batch_cmd->add_option("--out", batch.out_dir, "Folder for the parts' meshes, reports, logs and the summary");
+  checked(batch_cmd->add_option("--jobs", batch.jobs, "Rows meshed at once (default 1)"), whole_count());
+  checked(batch_cmd->add_option("--size", batch.size,
+                                "Size of the rows that give none: a length or P% (default: mesh's, 1/60 of the "
+                                "diagonal)"),
+          length_or_percent());
+  checked(batch_cmd->add_option("--timeout", batch.timeout, "Seconds each row may run (default 600)"), seconds());
+  checked(batch_cmd->add_option("--row", batch.row, "Run row K of LIST alone (from 1; a Slurm array task), no summary"),
+          whole_count());
+  batch_cmd->add_flag("--prepare", batch.prepare,
+                      "Write DIR/list.json and print the number of rows, run nothing (before a Slurm array)");
+  batch_cmd->add_option("--collect", batch.collect_dir,
+                        "Write DIR/summary.json and summary.md from the rows DIR holds (after --row runs)");
+
   RenderOptions render;
   CLI::App* render_cmd = app.add_subcommand(
       "render", "A picture of a quad (or mixed) mesh as SVG: faces coloured by quality, singular vertices marked");
@@ -243,7 +267,7 @@ int run(int argc, char** argv) {
           picture_width());
 
   // Options given after the subcommand apply too (quadmesh mesh f.obj -o g.msh --quiet).
-  for (CLI::App* sub : {info_cmd, forms_cmd, mesh_cmd, quality_cmd, compare_cmd, render_cmd}) {
+  for (CLI::App* sub : {info_cmd, forms_cmd, mesh_cmd, quality_cmd, compare_cmd, batch_cmd, render_cmd}) {
     sub->add_flag("-q,--quiet", common.quiet, "No progress lines on stderr");
     sub->add_flag("--largest-component", common.largest_component,
                   "Keep only the largest connected component of the input");
@@ -259,7 +283,7 @@ int run(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     // one line, like every other error (CLI11's own would add a second)
-    print_error(parse_error_line(e, app, {info_cmd, forms_cmd, mesh_cmd, quality_cmd, compare_cmd, render_cmd},
+    print_error(parse_error_line(e, app, {info_cmd, forms_cmd, mesh_cmd, quality_cmd, compare_cmd, batch_cmd, render_cmd},
                                  argc, argv));
     return exit_usage;
   }
@@ -273,6 +297,7 @@ int run(int argc, char** argv) {
     set_length_or_percent(quality_size, quality.size, quality.size_relative);
     return run_quality(quality, common);
   }
+  if (batch_cmd->parsed()) return run_batch(batch, common);
   if (compare_cmd->parsed()) {
     set_length_or_percent(compare_size, compare.size, compare.size_relative);
     return run_compare(compare, common);
