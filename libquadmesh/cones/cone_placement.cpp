@@ -261,10 +261,28 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
   std::vector<Cone> cones = corner_cones(soup, adjacency, options);
   int deficit = 4 * euler_characteristic(adjacency);
   for (const Cone& c : cones) deficit -= 2 - c.quads;
+  const std::vector<double> area = vertex_areas(soup);
+  // a quad mesh with more singular vertices than that is not what auto is for
+  // (and its seamless map would take long: a boundary line per corner): refused
+  // before any solve. A scan's ragged boundary has such corners by the hundred.
+  double total_area = 0;
+  for (double a : area) total_area += a;
+  const double allowed = std::max(options.max_interior_cones, options.max_interior_cone_share * total_area / (size * size));
+  if (static_cast<double>(cones.size()) > allowed)
+    throw Error(ErrorCode::unsupported,
+                fmt::format("{} boundary vertices are corners (more than {:g} degrees from straight), more than the "
+                            "{:.0f} cones allowed (max({:g}, {:g}% of the quads)): a ragged boundary",
+                            cones.size(), options.corner_angle_deg, allowed, options.max_interior_cones,
+                            100 * options.max_interior_cone_share));
   if (deficit == 0) return cones;
 
   const std::vector<double> curvature = vertex_curvature(soup, adjacency);
-  const std::vector<double> area = vertex_areas(soup);
+  if (std::abs(deficit) > allowed)
+    throw Error(ErrorCode::unsupported,
+                fmt::format("the {} corners leave {} quarter turns to interior cones, more than the {:.0f} allowed "
+                            "(max({:g}, {:g}% of the quads))",
+                            cones.size(), std::abs(deficit), allowed, options.max_interior_cones,
+                            100 * options.max_interior_cone_share));
   const std::vector<double> distance = distance_to_boundary(soup, adjacency);
   std::vector<char> eligible(distance.size(), 0);
   for (std::size_t v = 0; v < distance.size(); ++v) eligible[v] = distance[v] >= options.boundary_distance * size;

@@ -26,6 +26,12 @@ struct ConePlacementOptions {
   /// A boundary vertex counts as a corner when its angle differs from pi by more
   /// than this (degrees): 45 puts the change of quad count half-way between.
   double corner_angle_deg = 45.0;
+  /// At most max(max_interior_cones, max_interior_cone_share x the quads the area
+  /// holds at the size) interior cones (issue 18's bound on singular vertices),
+  /// and as many corners: a surface whose corners are more, or leave more, is
+  /// refused (qm::Error, unsupported).
+  double max_interior_cones = 24;
+  double max_interior_cone_share = 0.01;
   /// Interior cones keep this far from the boundary (in quads of the target size):
   /// nearer, the cone and the boundary line compete for the same lattice row.
   double boundary_distance = 2.0;

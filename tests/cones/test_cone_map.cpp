@@ -315,3 +315,27 @@ TEST_CASE("a T-plate: cones placed farther from the boundary and apart map witho
   CHECK(euler_and_singular(q) == std::pair{-1, 8});
   check_cone_quads(q, cones);
 }
+
+TEST_CASE("a ragged boundary with more corners than cones are allowed is refused before any solve") {
+  // a 3 x 1 strip whose lower edge zigzags: 59 teeth tips and valleys of 242 and 118
+  // degrees, all corners; at the size 0.5 the strip holds 12 quads, so 24 cones are allowed
+  TriangleSoup strip;
+  const int n = 60;
+  for (int i = 0; i <= n; ++i) strip.points.push_back(Vec3(0.05 * i, (i % 2 == 1) ? 0.03 : 0, 0));
+  for (int i = 0; i <= n; ++i) strip.points.push_back(Vec3(0.05 * i, 1, 0));
+  for (int i = 0; i < n; ++i) {
+    const int b = i, t = n + 1 + i;
+    strip.triangles.push_back({b, b + 1, t + 1});
+    strip.triangles.push_back({b, t + 1, t});
+  }
+  const SurfaceAdjacency adjacency = surface_adjacency(strip);
+  CHECK(corner_cones(strip, adjacency).size() == 63);  // 59 teeth and 4 right corners
+  try {
+    place_cones(strip, adjacency, 0.5);
+    FAIL("the ragged strip was not refused");
+  } catch (const Error& e) {
+    CHECK(e.code() == ErrorCode::unsupported);
+    CHECK(std::string(e.what()).find("63 boundary vertices are corners") != std::string::npos);
+    CHECK(std::string(e.what()).find("more than the 24 cones allowed") != std::string::npos);
+  }
+}
