@@ -256,6 +256,14 @@ void warn_if_far(const MeshSummary& s, const QuadMeshResult& r, double diagonal)
 }
 }  // namespace
 
+io::ReadOptions mesh_read_options(const MeshOptions& options, const CommonOptions& common) {
+  io::ReadOptions read;
+  read.cad_mesh_size = common.cad_mesh_size;
+  read.quad_size = options.size;
+  read.quad_size_relative = options.size_relative;
+  return read;
+}
+
 QuadMeshOptions quad_mesh_options(const MeshOptions& options) {
   QuadMeshOptions mesher;
   mesher.form = options.form;
@@ -289,10 +297,7 @@ int run_mesh(const MeshOptions& options, const CommonOptions& common) {
   if (options.each_component) return run_mesh_each_component(options, common);
   check_mesh_files(options);
   const Progress progress(common.quiet);
-  io::ReadOptions read;
-  read.cad_mesh_size = common.cad_mesh_size;
-  read.quad_size = options.size;
-  read.quad_size_relative = options.size_relative;
+  const io::ReadOptions read = mesh_read_options(options, common);
   check_cad_quad_estimate(options, read);
   const InputSurface in = load_input_surface(options.input, read, common.largest_component, progress);
   require_supported(in.surface);

@@ -170,10 +170,7 @@ int run_mesh_each_component(const MeshOptions& options, const CommonOptions& com
   check_assembly_options(options, common);
   check_mesh_files(options);
   const Progress progress(common.quiet);
-  io::ReadOptions read;
-  read.cad_mesh_size = common.cad_mesh_size;
-  read.quad_size = options.size;
-  read.quad_size_relative = options.size_relative;
+  const io::ReadOptions read = mesh_read_options(options, common);
   check_cad_quad_estimate(options, read);
   const InputSurface in = load_input_surface(options.input, read, false, progress);
   const double diagonal = bounding_box_diagonal(in.surface.soup.points, in.surface.soup.triangles);

@@ -23,6 +23,10 @@ void check_quad_estimate(const MeshOptions& options, const TriangleSoup& soup);
 /// area for the same estimate (`read`: the options of the real reading).
 void check_cad_quad_estimate(const MeshOptions& options, const io::ReadOptions& read);
 
+/// How the input is read for `quadmesh mesh`: the CAD triangle size, and the quad
+/// size the triangulation is for.
+io::ReadOptions mesh_read_options(const MeshOptions& options, const CommonOptions& common);
+
 /// The mesher's options as the command line gives them.
 QuadMeshOptions quad_mesh_options(const MeshOptions& options);
 
