@@ -77,6 +77,16 @@ std::vector<int> ring_neighbourhood(const TriangleSoup& soup, const SurfaceAdjac
   return out;
 }
 
+/// Per vertex: within `separation` edges of an interior cone other than cones[moving].
+std::vector<char> crowded(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const std::vector<Cone>& cones,
+                          std::ptrdiff_t moving, int separation) {
+  std::vector<char> near(soup.points.size(), 0);
+  for (std::size_t j = 0; j < cones.size(); ++j)
+    if (static_cast<std::ptrdiff_t>(j) != moving && !adjacency.boundary_vertex[static_cast<std::size_t>(cones[j].vertex)])
+      for (int w : ring_neighbourhood(soup, adjacency, cones[j].vertex, separation)) near[static_cast<std::size_t>(w)] = 1;
+  return near;
+}
+
 /// Moves interior cones, one at a time, to where the field meets every boundary
 /// loop closest to a whole quarter turn (cross_field.h LoopTurns), within
 /// `rings` edges of where they are. Returns the largest turn left (radians).
@@ -97,14 +107,6 @@ double align_loops_by_cones(const TriangleSoup& soup, const SurfaceAdjacency& ad
       if (static_cast<int>(l) != model.reference) c += std::abs(quarter_turn_remainder(model.offset[l] - d[l]));
     return c;
   };
-  // vertices within `separation` edges of a cone other than the one moving
-  auto crowded = [&](const Cone& moving) {
-    std::vector<char> near(kappa.size(), 0);
-    for (const Cone& c : cones)
-      if (&c != &moving && !adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)])
-        for (int w : ring_neighbourhood(soup, adjacency, c.vertex, separation)) near[static_cast<std::size_t>(w)] = 1;
-    return near;
-  };
   double current = cost(dot);
   for (int pass = 0; pass < max_alignment_passes && current > alignment_goal; ++pass) {
     bool moved = false;
@@ -113,7 +115,7 @@ double align_loops_by_cones(const TriangleSoup& soup, const SurfaceAdjacency& ad
       const double k = (4 - cone.quads) * quarter_turn;
       int best = -1;
       std::vector<double> best_dot;
-      const std::vector<char> near = crowded(cone);
+      const std::vector<char> near = crowded(soup, adjacency, cones, &cone - cones.data(), separation);
       for (int w : ring_neighbourhood(soup, adjacency, cone.vertex, rings)) {
         const auto sw = static_cast<std::size_t>(w);
         if (near[sw] || !eligible[sw]) continue;
@@ -176,9 +178,7 @@ void relax_cones_for_size(const TriangleSoup& soup, const SurfaceAdjacency& adja
     Eigen::VectorXd rhs(static_cast<Eigen::Index>(kappa.size()));
     for (std::size_t v = 0; v < kappa.size(); ++v) rhs[static_cast<Eigen::Index>(v)] = kappa[v] - curvature[v];
     double c = 0;
-    for (std::size_t l = 0; l < loops; ++l)
-      if (static_cast<int>(l) != model.reference)
-        c += std::abs(quarter_turn_remainder(model.offset[l] - model.gradient[l].dot(rhs)));
+    for (std::size_t l = 0; l < loops; ++l) c += std::abs(model.turn(static_cast<int>(l), rhs));
     return c;
   };
   auto metric = [&](const std::vector<Cone>& trial) {
@@ -197,10 +197,7 @@ void relax_cones_for_size(const TriangleSoup& soup, const SurfaceAdjacency& adja
       const int a = cones[i].vertex;
       if (adjacency.boundary_vertex[static_cast<std::size_t>(a)]) continue;
       const double k = (4 - cones[i].quads) * quarter_turn;
-      std::vector<char> near(soup.points.size(), 0);
-      for (std::size_t j = 0; j < cones.size(); ++j)
-        if (j != i && !adjacency.boundary_vertex[static_cast<std::size_t>(cones[j].vertex)])
-          for (int w : ring_neighbourhood(soup, adjacency, cones[j].vertex, separation)) near[static_cast<std::size_t>(w)] = 1;
+      const std::vector<char> near = crowded(soup, adjacency, cones, static_cast<std::ptrdiff_t>(i), separation);
       int best = -1;
       double best_drop = 0;
       for (int b : ring_neighbourhood(soup, adjacency, a, 1)) {
