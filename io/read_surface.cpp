@@ -90,6 +90,17 @@ bool has_surface_elements() {
   return !types.empty();
 }
 
+/// The automatic CAD triangulation: triangles of this fraction of the quad size.
+/// The map is linear on each triangle, so a triangle must not be wider than a
+/// quad (long_edges.h splits those that are); Gmsh's Frontal-Delaunay edges reach
+/// about 1.3 x the size asked, so 0.75 keeps them under the quad size. A third
+/// (the size before issue 21) gave the same quads from 5 x the triangles.
+constexpr double cad_triangle_fraction = 0.75;
+/// ...and at most 2 pi / this many radians of a curve or surface's curvature per
+/// triangle (Gmsh's Mesh.MeshSizeFromCurvature): a fillet or a bend finer than the
+/// quads stays close to the CAD surface (chord height under 1% of its radius).
+constexpr double cad_curvature_elements = 24;
+
 /// Triangulates the CAD model loaded in Gmsh; returns the triangle size used.
 double triangulate_cad(const std::string& path, const ReadOptions& options,
                        const GmshSession& session) {
@@ -100,9 +111,11 @@ double triangulate_cad(const std::string& path, const ReadOptions& options,
   const double quad_size = options.quad_size > 0          ? options.quad_size
                            : options.quad_size_relative > 0 ? options.quad_size_relative * diagonal
                                                             : diagonal / 60.0;
-  const double size = options.cad_mesh_size > 0 ? options.cad_mesh_size : quad_size / 3.0;
+  const bool automatic = !(options.cad_mesh_size > 0);
+  const double size = automatic ? cad_triangle_fraction * quad_size : options.cad_mesh_size;
   if (has_surface_elements()) return 0.0;  // the script meshed itself
   gmsh::option::setNumber("Mesh.MeshSizeMax", size);
+  if (automatic) gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", cad_curvature_elements);
   try {
     gmsh::model::mesh::generate(2);
   } catch (...) {

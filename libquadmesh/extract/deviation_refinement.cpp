@@ -1,6 +1,7 @@
 #include "libquadmesh/extract/deviation_refinement.h"
 
 #include "libquadmesh/core/error.h"
+#include "libquadmesh/core/parallel.h"
 #include "libquadmesh/extract/internal/closest_location.h"
 #include "libquadmesh/extract/quad_chords.h"
 #include "libquadmesh/quality/hausdorff.h"
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 namespace qm {
 
@@ -98,8 +100,13 @@ TriangleTree quad_triangle_tree(const LatticeQuads& quads) {
 }
 
 double quad_to_surface(const TriangleTree& surface, const std::array<Vec3, 4>& corners) {
+  // each sample's search starts from the previous one's answer (the first's: the centre's)
   double d = 0;
-  for (const Vec3& s : quad_deviation_samples(corners)) d = std::max(d, (surface.closest(s).first - s).norm());
+  std::optional<std::pair<Vec3, int>> previous;
+  for (const Vec3& s : quad_deviation_samples(corners)) {
+    previous = previous ? surface.closest(s, *previous) : surface.closest(s);
+    d = std::max(d, (previous->first - s).norm());
+  }
   return d;
 }
 
@@ -114,12 +121,16 @@ std::vector<double> quad_deviation(const TriangleTree& surface, const std::vecto
   if (q.quads.empty()) return out;
   const TriangleTree quads = quad_triangle_tree(q);
   if (quads.empty()) return out;
-  for (const Vec3& s : surface_samples) {
-    const auto [p, k] = quads.closest(s);
+  const std::vector<std::pair<Vec3, int>> nearest = parallel_map<std::pair<Vec3, int>>(
+      surface_samples.size(), [&](std::size_t i) { return quads.closest(surface_samples[i]); });
+  for (std::size_t i = 0; i < surface_samples.size(); ++i) {
+    const auto& [p, k] = nearest[i];
     double& d = out[static_cast<std::size_t>(k)];
-    d = std::max(d, (p - s).norm());
+    d = std::max(d, (p - surface_samples[i]).norm());
   }
-  for (std::size_t k = 0; k < q.quads.size(); ++k) out[k] = std::max(out[k], quad_to_surface(surface, quad_corners(q, k)));
+  const std::vector<double> side =
+      parallel_map<double>(q.quads.size(), [&](std::size_t k) { return quad_to_surface(surface, quad_corners(q, k)); });
+  for (std::size_t k = 0; k < q.quads.size(); ++k) out[k] = std::max(out[k], side[k]);
   return out;
 }
 

@@ -1,6 +1,7 @@
 #include "libquadmesh/extract/quad_angle_smoothing.h"
 
 #include "libquadmesh/core/error.h"
+#include "libquadmesh/core/parallel.h"
 #include "libquadmesh/extract/internal/closest_location.h"
 #include "libquadmesh/extract/internal/quad_star.h"
 #include "libquadmesh/extract/deviation_refinement.h"
@@ -35,16 +36,18 @@ Distances distances(const TriangleSoup& surface, const TriangleTree& tree, const
   Distances d;
   const TriangleTree quad_tree = quad_triangle_tree(quads);
   if (quad_tree.empty()) return d;
-  auto add = [&](const Vec3& s) {
-    const auto [p, k] = quad_tree.closest(s);
-    d.vertex.push_back((p - s).norm());
-    d.nearest.push_back(k);
+  const std::size_t n = watched ? watched->size() : surface.points.size();
+  auto point = [&](std::size_t i) -> const Vec3& {
+    return surface.points[watched ? static_cast<std::size_t>((*watched)[i]) : i];
   };
-  if (!watched)
-    for (const Vec3& s : surface.points) add(s);
-  else
-    for (int v : *watched) add(surface.points[static_cast<std::size_t>(v)]);
-  for (std::size_t k = 0; k < quads.quads.size(); ++k) d.quad.push_back(quad_to_surface(tree, quad_corners(quads, k)));
+  const std::vector<std::pair<Vec3, int>> nearest =
+      parallel_map<std::pair<Vec3, int>>(n, [&](std::size_t i) { return quad_tree.closest(point(i)); });
+  for (std::size_t i = 0; i < n; ++i) {
+    d.vertex.push_back((nearest[i].first - point(i)).norm());
+    d.nearest.push_back(nearest[i].second);
+  }
+  d.quad = parallel_map<double>(quads.quads.size(),
+                                [&](std::size_t k) { return quad_to_surface(tree, quad_corners(quads, k)); });
   return d;
 }
 
@@ -115,8 +118,9 @@ std::optional<std::pair<Vec3, SurfaceLocation>> angle_move(const TriangleSoup& s
   if (!(g > 0)) return std::nullopt;
   const Vec3 down = -(gx * x + gy * y) / g;
   const double floor = std::min(worst(here), options.keep_jacobian);
+  const std::pair<Vec3, int> on_surface = tree.closest(here);  // where the steps' searches start
   for (double step = first_step * edge; step > first_step * edge / smallest_step_divisor; step *= 0.5) {
-    const auto candidate = closest_location(surface, tree, here + step * down);
+    const auto candidate = closest_location(surface, tree, here + step * down, on_surface);
     const Vec3& p = candidate.first;
     if (options.max_move > 0 && (p - moves.original().points[vi]).norm() > options.max_move) continue;
     if (angle_deviation_sum(star, v, p) < now && worst(p) >= floor) return candidate;

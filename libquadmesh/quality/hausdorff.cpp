@@ -1,5 +1,7 @@
 #include "libquadmesh/quality/hausdorff.h"
 
+#include "libquadmesh/core/parallel.h"
+
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/quality/internal/triangle_tree.h"
 
@@ -56,11 +58,13 @@ FarthestSample farthest_sample(const std::vector<Vec3>& samples, const std::vect
     far.distance = std::numeric_limits<double>::quiet_NaN();
     return far;
   }
+  const std::vector<double> squared =
+      parallel_map<double>(samples.size(), [&](std::size_t i) { return tree.squared_distance(samples[i]); });
   double worst = -1;
-  for (const Vec3& s : samples)
-    if (const double d = tree.squared_distance(s); d > worst) {
-      worst = d;
-      far.point = s;
+  for (std::size_t i = 0; i < samples.size(); ++i)
+    if (squared[i] > worst) {
+      worst = squared[i];
+      far.point = samples[i];
     }
   far.distance = std::sqrt(worst);
   return far;

@@ -5,6 +5,9 @@
 #include "io/child_process.h"
 #include "io/read_surface.h"
 #include "libquadmesh/core/error.h"
+#include "libquadmesh/forms/long_edges.h"
+#include "libquadmesh/pipeline/internal/retry_policy.h"
+#include "libquadmesh/quality/hausdorff.h"
 #include "tests/support/run_quadmesh.h"
 #include "tests/support/test_meshes.h"
 
@@ -338,17 +341,18 @@ TEST_CASE("--cad-timeout and --cad-memory take positive finite numbers") {
 }
 
 TEST_CASE("the bundled examples read as before (counts of the in-process reader)") {
-  // Recorded with `quadmesh info --json` (faces, cad_curve_edges) before Gmsh
-  // moved to a child process.
+  // Recorded with `quadmesh info --json` (faces, cad_curve_edges) with the
+  // automatic CAD triangle size of issue 21 (0.75 x the quad size, 15 degrees of
+  // bend per triangle at most); the child-process reader must give them exactly.
   struct Counts {
     std::size_t triangles, curve_edges;
   };
   const std::map<std::string, Counts> counts = {
-      {"annulus.geo", {22308, 600}},
-      {"curved-shell-holes.geo", {42047, 709}},
-      {"l-plate-three-holes.geo", {22568, 680}},
-      {"plate-two-holes.geo", {29958, 690}},
-      {"plate-v-hole.geo", {30969, 719}},
+      {"annulus.geo", {4479, 267}},
+      {"curved-shell-holes.geo", {8465, 317}},
+      {"l-plate-three-holes.geo", {4760, 306}},
+      {"plate-two-holes.geo", {6178, 310}},
+      {"plate-v-hole.geo", {6349, 323}},
   };
   for (const auto& [name, count] : counts) {
     CAPTURE(name);
@@ -356,6 +360,24 @@ TEST_CASE("the bundled examples read as before (counts of the in-process reader)
     CHECK(file.soup.triangles.size() == count.triangles);
     CHECK(file.soup.cad.edges.size() == count.curve_edges);
   }
+}
+
+TEST_CASE("the automatic CAD triangles are no wider than the quads (the input is meshed once)") {
+  // quadmesh splits triangles wider than the quads and meshes both triangulations
+  // when they cover long_edge_area_threshold of the area or more: the automatic
+  // CAD size must stay under that, at the default size and at 1.5% and 0.75%.
+  for (const char* name : {"plate-two-holes.geo", "curved-shell-holes.geo", "l-plate-three-holes.geo"})
+    for (const double relative : {1.0 / 60.0, 0.015, 0.0075}) {
+      CAPTURE(name);
+      CAPTURE(relative);
+      io::ReadOptions options;
+      options.quad_size_relative = relative;
+      const io::SurfaceFile file = io::read_surface(test::example(name), options);
+      const double quad = relative * bounding_box_diagonal(file.soup.points, file.soup.triangles);
+      CHECK(file.cad_mesh_size == doctest::Approx(0.75 * quad).epsilon(1e-3));  // Gmsh pads its box a little
+      CHECK(long_edge_area_fraction(file.soup, quad) < long_edge_area_threshold);
+      CHECK(long_edge_area_fraction(file.soup, 1.5 * quad) == 0.0);
+    }
 }
 
 TEST_CASE("a .geo and a STEP through the child give the same SurfaceFile as in-process") {

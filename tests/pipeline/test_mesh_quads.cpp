@@ -2,6 +2,7 @@
 // read off the parameterization, and the properties every output must have.
 #include "io/read_surface.h"
 #include "libquadmesh/core/error.h"
+#include "libquadmesh/core/parallel.h"
 #include "libquadmesh/forms/boundary_chords.h"
 #include "libquadmesh/param/form_choice.h"
 #include "libquadmesh/param/rounding_scale.h"
@@ -76,6 +77,30 @@ void check_result(const TriangleSoup& input, const QuadMeshResult& r, int chi, i
 }
 
 }  // namespace
+
+TEST_CASE("the quads and their quality are the same bit for bit on one worker thread and on two") {
+  // issue 21: the loops that run on both cores (closest points per sample, per
+  // quad, per vertex) write one slot per index and reduce in index order
+  const TriangleSoup input = analysed(test::example("plate-two-holes.geo"));
+  auto run = [&](std::size_t threads) {
+    const ThreadLimit limit(threads);
+    CHECK(worker_threads() == threads);
+    QuadMeshResult r = mesh_quads(input, QuadMeshOptions{});
+    const QuadQuality q = quad_quality(polygon_mesh(r.quads), &input);
+    return std::make_pair(std::move(r), q);
+  };
+  const auto [one, one_quality] = run(1);
+  const auto [two, two_quality] = run(2);
+  REQUIRE(one.quads.quads.size() > 0);
+  CHECK(one.quads.quads == two.quads.quads);
+  REQUIRE(one.quads.points.size() == two.quads.points.size());
+  std::size_t moved = 0;
+  for (std::size_t v = 0; v < one.quads.points.size(); ++v) moved += one.quads.points[v] != two.quads.points[v];
+  CHECK(moved == 0);
+  CHECK(one_quality.hausdorff_rel == two_quality.hausdorff_rel);
+  CHECK(one_quality.min_scaled_jacobian == two_quality.min_scaled_jacobian);
+  CHECK(one_quality.angle_dev_mean == two_quality.angle_dev_mean);
+}
 
 TEST_CASE("singularities auto on an annulus: the Abel quads are in the size band, so auto gives exactly them") {
   // quad size grows like r from the inner circle to the outer: within 2/3 to 4/3 of the mean

@@ -2,6 +2,7 @@
 // and throws qm::Error for bad input (the caller prints it as one line).
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@ struct CommonOptions {
   double cad_timeout = 300.0;  ///< --cad-timeout: seconds Gmsh may take on one input
   double cad_memory = 0.0;     ///< --cad-memory: GiB Gmsh may use; 0: automatic
   bool allow_geo_commands = false;  ///< --allow-geo-commands
+  std::size_t threads = 0;          ///< --threads: worker threads; 0: all cores
 };
 
 struct InfoOptions {

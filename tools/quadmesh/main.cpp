@@ -1,6 +1,7 @@
 // quadmesh: boundary-aligned quad meshes of surfaces with boundaries, from
 // symmetric holomorphic differentials. See README.md for every option.
 #include "io/read_surface.h"
+#include "libquadmesh/core/parallel.h"
 #include "tools/common/exit_codes.h"
 #include "tools/common/usage_error.h"
 #include "tools/quadmesh/commands.h"
@@ -40,6 +41,14 @@ void add_cad_sandbox_options(CLI::App& app, CommonOptions& common) {
           gibibytes());
   app.add_flag("--allow-geo-commands", common.allow_geo_commands,
                ".geo input: allow SystemCall, writing files, Exit, and files outside its folder");
+}
+
+void add_threads_option(CLI::App& app, CommonOptions& common) {
+  app.add_option("--threads", common.threads,
+                 "Worker threads for the loops whose iterations are independent (default: all cores); the "
+                 "results are the same bit for bit whatever the number")
+      ->type_name("UINT:N")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{4096}));
 }
 
 void print_error(const std::string& message) noexcept {
@@ -91,9 +100,10 @@ int run(int argc, char** argv) {
   app.add_flag("--largest-component", common.largest_component,
                "Keep only the largest connected component of the input");
   checked(app.add_option("--cad-mesh-size", common.cad_mesh_size,
-                         "CAD input: Gmsh triangle size (default: a third of the quad size)"),
+                         "CAD input: Gmsh triangle size (default: 0.75 x the quad size, finer where curves and surfaces bend)"),
           positive_length());
   add_cad_sandbox_options(app, common);
+  add_threads_option(app, common);
 
   InfoOptions info;
   CLI::App* info_cmd = app.add_subcommand("info", "Topology of a surface and whether the method applies");
@@ -272,9 +282,10 @@ int run(int argc, char** argv) {
     sub->add_flag("--largest-component", common.largest_component,
                   "Keep only the largest connected component of the input");
     checked(sub->add_option("--cad-mesh-size", common.cad_mesh_size,
-                            "CAD input: Gmsh triangle size (default: a third of the quad size)"),
+                            "CAD input: Gmsh triangle size (default: 0.75 x the quad size, finer where curves and surfaces bend)"),
             positive_length());
     add_cad_sandbox_options(*sub, common);
+    add_threads_option(*sub, common);
   }
 
   try {
@@ -287,6 +298,7 @@ int run(int argc, char** argv) {
                                  argc, argv));
     return exit_usage;
   }
+  const qm::ThreadLimit threads(common.threads);
   qm::io::CadSandbox& sandbox = qm::io::default_cad_sandbox();  // every read gets it
   sandbox.timeout_seconds = common.cad_timeout;
   sandbox.memory_gib = common.cad_memory;
