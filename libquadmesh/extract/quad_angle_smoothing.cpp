@@ -88,6 +88,17 @@ double angle_deviation_sum(const QuadStar& star, int v, const Vec3& p) {
   return sum;
 }
 
+/// The largest angle deviation |angle - 90| (degrees) among the corners of the quads around v.
+double largest_angle_deviation(const QuadStar& star, int v) {
+  double largest = 0;
+  for (int q : star.quads_at[static_cast<std::size_t>(v)]) {
+    const std::array<Vec3, 4> c = quad_corners(star.quads, static_cast<std::size_t>(q));
+    for (std::size_t k = 0; k < 4; ++k)
+      largest = std::max(largest, std::abs(corner_angle_deg(c[(k + 3) % 4], c[k], c[(k + 1) % 4]) - 90.0));
+  }
+  return largest;
+}
+
 /// The move of the regular point v: a step down the numerical gradient of
 /// angle_deviation_sum in the plane normal to normals[v], backtracking until the
 /// sum goes down with the smallest scaled Jacobian of v's quads at least
@@ -99,6 +110,7 @@ std::optional<std::pair<Vec3, SurfaceLocation>> angle_move(const TriangleSoup& s
                                                            const QuadAngleSmoothingOptions& options, int v) {
   const LatticeQuads& quads = star.quads;
   const std::size_t vi = static_cast<std::size_t>(v);
+  if (largest_angle_deviation(star, v) < options.min_corner_deviation_deg) return std::nullopt;
   const auto worst = [&](const Vec3& p) { return worst_corner_jacobian(quads, star.quads_at[vi], v, p, normals); };
   const Vec3 here = quads.points[vi];
   double edge = std::numeric_limits<double>::infinity();
@@ -199,16 +211,18 @@ QuadAngleSmoothingReport smooth_quad_angles(const TriangleSoup& surface, Lattice
   if (quads.quads.empty()) return report;
 
   const TriangleTree tree(surface.points, surface.triangles);
-  Before before;
-  before.jacobian = sound_scaled_jacobians(polygon_mesh(quads));
-  if (options.max_deviation > 0) before.distances = distances(surface, tree, quads, nullptr);
-  before.watched = watched_vertices(before.distances, options.max_deviation);
   std::vector<char> movable(quads.points.size(), 0);
   for (std::size_t v = 0; v < movable.size(); ++v)
     movable[v] = star.regular_interior(v, boundary_loop_of_point) && (fixed.empty() || !fixed[v]);
   PointMoves moves(quads);
   for (int round = 0; round < options.rounds; ++round)
     if (angle_round(surface, tree, star, movable, moves, options) == 0) break;
+  if (moves.count() == 0) return report;
+  // what the moved quads must not come out worse in, measured on the quads as they were
+  Before before;
+  before.jacobian = sound_scaled_jacobians(polygon_mesh(moves.original()));
+  if (options.max_deviation > 0) before.distances = distances(surface, tree, moves.original(), nullptr);
+  before.watched = watched_vertices(before.distances, options.max_deviation);
   // Moves were judged with the normals of the start of their round, and each with
   // its neighbours where they were then; a point sliding along a curved part makes
   // its quads cut across S, or leaves a tip of S farther from them. The quads

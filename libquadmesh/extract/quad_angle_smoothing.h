@@ -37,6 +37,11 @@ struct QuadAngleSmoothingOptions {
   /// A quad's deviation from S may grow up to this (or stay where it was, if that
   /// was more); 0: no check.
   double max_deviation = 0;
+  /// A point moves only while a corner of its quads is this far from 90 degrees
+  /// or farther: the corners of a point within it cannot gain more, and such points
+  /// are most of a fine grid (issue 21: the sweep's cost follows the quads that
+  /// need it, not all of them).
+  double min_corner_deviation_deg = 3.0;
 };
 
 struct QuadAngleSmoothingReport {

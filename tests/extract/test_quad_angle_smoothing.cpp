@@ -16,14 +16,14 @@ namespace {
 constexpr int n = 8;
 
 /// The unit square's n x n grid with every interior point pushed off its place by
-/// up to a fifth of a cell (deterministic).
-LatticeQuads jittered_grid() {
+/// up to `fraction` of a cell (deterministic).
+LatticeQuads jittered_grid(double fraction = 0.2) {
   LatticeQuads q = test::grid_quads(test::grid(n), n);
   const std::vector<int> loops = test::unit_square_boundary(q);
   for (std::size_t v = 0; v < q.points.size(); ++v)
     if (loops[v] < 0)
-      q.points[v] += Vec3(0.2 / n * std::sin(7.0 * static_cast<double>(v)),
-                          0.2 / n * std::cos(5.0 * static_cast<double>(v)), 0.0);
+      q.points[v] += Vec3(fraction / n * std::sin(7.0 * static_cast<double>(v)),
+                          fraction / n * std::cos(5.0 * static_cast<double>(v)), 0.0);
   return q;
 }
 
@@ -45,6 +45,7 @@ TEST_CASE("angle smoothing takes a jittered grid back to right angles, boundary 
   fixed[held] = 1;
   QuadAngleSmoothingOptions options;
   options.rounds = 60;
+  options.min_corner_deviation_deg = 0;  // the optimizer itself, to the end
   const QuadAngleSmoothingReport report = smooth_quad_angles(surface, q, loops, fixed, options);
   CHECK(report.angle_dev_before == doctest::Approx(before));
   CHECK(report.angle_dev_after == doctest::Approx(mean_angle_deviation(q)));
@@ -62,6 +63,24 @@ TEST_CASE("angle smoothing takes a jittered grid back to right angles, boundary 
   const QuadAngleSmoothingReport all = smooth_quad_angles(surface, free, loops, {}, options);
   CHECK(all.angle_dev_after < 0.04 * before);
   CHECK(test::min_scaled_jacobian(free) > 0.99);
+}
+
+TEST_CASE("angle smoothing leaves a point whose corners are all within min_corner_deviation_deg") {
+  // jitter of 1% of a cell turns corners by about 1 degree: under the default 3
+  const TriangleSoup surface = test::grid(n);
+  const LatticeQuads slight = jittered_grid(0.01);
+  const double largest = quad_quality(polygon_mesh(slight), nullptr).angle_dev_max;
+  REQUIRE(largest > 0.1);
+  REQUIRE(largest < QuadAngleSmoothingOptions{}.min_corner_deviation_deg);
+  LatticeQuads q = slight;
+  const QuadAngleSmoothingReport kept = smooth_quad_angles(surface, q, test::unit_square_boundary(q), {});
+  CHECK(kept.moved_points == 0);
+  CHECK(q.points == slight.points);
+  QuadAngleSmoothingOptions every;
+  every.min_corner_deviation_deg = 0;
+  const QuadAngleSmoothingReport moved = smooth_quad_angles(surface, q, test::unit_square_boundary(q), {}, every);
+  CHECK(moved.moved_points > 0);
+  CHECK(moved.angle_dev_after < moved.angle_dev_before);
 }
 
 TEST_CASE("angle smoothing leaves right angles alone and stays within max_move") {

@@ -23,11 +23,17 @@ void improve_quads(QuadMeshResult& best, const QuadMeshOptions& options, Stages&
   if (best.max_deviation > 0 && !best.quads.quads.empty() &&
       best.refinement.deviation_after <= within_reach * best.max_deviation) {
     stages.next("fitting", "moving corners onto S where the quads cut across it");
-    const std::vector<Vec3> before_fitting = best.quads.points;
-    QuadFittingOptions fitting;
-    fitting.tolerance = best.max_deviation;
-    best.fitting = fit_quads_to_surface(best.surface, best.quads, best.boundary_loop_of_point, fitting);
-    for (std::size_t v = 0; v < fitted.size(); ++v) fitted[v] = best.quads.points[v] != before_fitting[v];
+    if (best.smoothing.moved_points == 0 && best.refinement.deviation_after <= best.max_deviation) {
+      // the refinement measured these very quads (same samples, same tolerance)
+      // within the tolerance: the fitting would measure that again and stop
+      best.fitting.deviation_before = best.fitting.deviation_after = best.refinement.deviation_after;
+    } else {
+      const std::vector<Vec3> before_fitting = best.quads.points;
+      QuadFittingOptions fitting;
+      fitting.tolerance = best.max_deviation;
+      best.fitting = fit_quads_to_surface(best.surface, best.quads, best.boundary_loop_of_point, fitting);
+      for (std::size_t v = 0; v < fitted.size(); ++v) fitted[v] = best.quads.points[v] != before_fitting[v];
+    }
   }
   if (options.smoothing && !best.quads.quads.empty()) {
     stages.next("angle_smoothing", "moving quad corners towards right angles");
