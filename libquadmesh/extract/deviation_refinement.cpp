@@ -12,7 +12,6 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <optional>
 
 namespace qm {
 
@@ -100,13 +99,8 @@ TriangleTree quad_triangle_tree(const LatticeQuads& quads) {
 }
 
 double quad_to_surface(const TriangleTree& surface, const std::array<Vec3, 4>& corners) {
-  // each sample's search starts from the previous one's answer (the first's: the centre's)
   double d = 0;
-  std::optional<std::pair<Vec3, int>> previous;
-  for (const Vec3& s : quad_deviation_samples(corners)) {
-    previous = previous ? surface.closest(s, *previous) : surface.closest(s);
-    d = std::max(d, (previous->first - s).norm());
-  }
+  for (const Vec3& s : quad_deviation_samples(corners)) d = std::max(d, (surface.closest(s).first - s).norm());
   return d;
 }
 

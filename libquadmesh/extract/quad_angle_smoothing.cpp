@@ -130,9 +130,8 @@ std::optional<std::pair<Vec3, SurfaceLocation>> angle_move(const TriangleSoup& s
   if (!(g > 0)) return std::nullopt;
   const Vec3 down = -(gx * x + gy * y) / g;
   const double floor = std::min(worst(here), options.keep_jacobian);
-  const std::pair<Vec3, int> on_surface = tree.closest(here);  // where the steps' searches start
   for (double step = first_step * edge; step > first_step * edge / smallest_step_divisor; step *= 0.5) {
-    const auto candidate = closest_location(surface, tree, here + step * down, on_surface);
+    const auto candidate = closest_location(surface, tree, here + step * down);
     const Vec3& p = candidate.first;
     if (options.max_move > 0 && (p - moves.original().points[vi]).norm() > options.max_move) continue;
     if (angle_deviation_sum(star, v, p) < now && worst(p) >= floor) return candidate;

@@ -11,8 +11,9 @@ std::array<double, 3> barycentric(const Vec3& p, const Vec3& a, const Vec3& b, c
   return {1 - y - z, y, z};
 }
 
-namespace {
-std::pair<Vec3, SurfaceLocation> face_location(const TriangleSoup& surface, const Vec3& p, int f) {
+std::pair<Vec3, SurfaceLocation> closest_location(const TriangleSoup& surface, const TriangleTree& tree,
+                                                  const Vec3& guess) {
+  const auto [p, f] = tree.closest(guess);
   const Triangle& t = surface.triangles[static_cast<std::size_t>(f)];
   SurfaceLocation loc;
   loc.kind = SurfaceLocation::Kind::face;
@@ -21,19 +22,6 @@ std::pair<Vec3, SurfaceLocation> face_location(const TriangleSoup& surface, cons
                                 surface.points[static_cast<std::size_t>(t[1])],
                                 surface.points[static_cast<std::size_t>(t[2])]);
   return {p, loc};
-}
-}  // namespace
-
-std::pair<Vec3, SurfaceLocation> closest_location(const TriangleSoup& surface, const TriangleTree& tree,
-                                                  const Vec3& guess) {
-  const auto [p, f] = tree.closest(guess);
-  return face_location(surface, p, f);
-}
-
-std::pair<Vec3, SurfaceLocation> closest_location(const TriangleSoup& surface, const TriangleTree& tree,
-                                                  const Vec3& guess, const std::pair<Vec3, int>& hint) {
-  const auto [p, f] = tree.closest(guess, hint);
-  return face_location(surface, p, f);
 }
 
 }  // namespace qm

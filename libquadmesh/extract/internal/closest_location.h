@@ -18,8 +18,5 @@ std::array<double, 3> barycentric(const Vec3& p, const Vec3& a, const Vec3& b, c
 /// indices) to `guess`, as a face location of `surface`.
 std::pair<Vec3, SurfaceLocation> closest_location(const TriangleSoup& surface, const TriangleTree& tree,
                                                   const Vec3& guess);
-/// The same, the search started from `hint` (TriangleTree::closest with a hint).
-std::pair<Vec3, SurfaceLocation> closest_location(const TriangleSoup& surface, const TriangleTree& tree,
-                                                  const Vec3& guess, const std::pair<Vec3, int>& hint);
 
 }  // namespace qm

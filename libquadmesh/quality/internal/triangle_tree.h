@@ -29,11 +29,6 @@ class TriangleTree {
   bool empty() const;
   /// The closest point on the triangles and the id of its triangle (not empty()).
   std::pair<Vec3, int> closest(const Vec3& p) const;
-  /// The same, starting the search from `hint`, the answer for a nearby point
-  /// (a previous closest() of this tree): no nearest-vertex search first, and
-  /// most boxes pruned at once. The answer is a closest point whatever the hint;
-  /// only among equally close triangles may the one named differ.
-  std::pair<Vec3, int> closest(const Vec3& p, const std::pair<Vec3, int>& hint) const;
   double squared_distance(const Vec3& p) const;
 
  private:
