@@ -34,7 +34,7 @@ std::vector<internal::EdgeTerm> block_terms(const Mesh& mesh, const Eigen::Vecto
 }
 
 void factor(const Mesh& mesh, const Eigen::VectorXd& weights, Block& b) {
-  const SparseMatrix A = internal::edge_laplacian(b.unknowns, block_terms(mesh, weights, b));
+  const SparseMatrix A = internal::edge_laplacian_lower(b.unknowns, block_terms(mesh, weights, b));
   internal::use_amd_ordering(b.cholesky);
   b.cholesky.compute(A);
   if (b.cholesky.info() != Eigen::Success)
