@@ -16,26 +16,16 @@
 #include "libquadmesh/forms/harmonic_basis.h"
 #include "libquadmesh/forms/symmetric_forms.h"
 #include "libquadmesh/topology/applicability.h"
+#include "tools/common/heap_settings.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
-
-#include <malloc.h>
 
 #include <algorithm>
 #include <chrono>
 #include <vector>
 
 namespace {
-
-/// Freed memory stays in the heap for reuse instead of going back to the kernel:
-/// blocks up to 32 MB (glibc's largest threshold) come from the heap, which grows
-/// in 256 MB steps and is trimmed only above 1 GB free.
-void keep_freed_memory() {
-  mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024);
-  mallopt(M_TOP_PAD, 256 * 1024 * 1024);
-  mallopt(M_TRIM_THRESHOLD, 1024 * 1024 * 1024);
-}
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
@@ -52,7 +42,7 @@ int main(int argc, char** argv) {
   app.add_option("--repeat", repeat, "Runs per measurement (the minimum is kept)")->check(CLI::PositiveNumber);
   app.add_flag("--system-malloc", system_malloc, "Keep glibc's malloc defaults (memory back to the kernel)");
   CLI11_PARSE(app, argc, argv);
-  if (!system_malloc) keep_freed_memory();
+  if (!system_malloc) qm::tools::keep_freed_memory();
 
   try {
     auto t = std::chrono::steady_clock::now();

@@ -9,6 +9,7 @@
 #include "io/read_surface.h"
 #include "libquadmesh/pipeline/mesh_quads.h"
 #include "libquadmesh/topology/applicability.h"
+#include "tools/common/heap_settings.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -17,6 +18,7 @@
 #include <chrono>
 
 int main(int argc, char** argv) {
+  qm::tools::keep_freed_memory();  // as quadmesh does
   CLI::App app{"Stage times of the quad mesher against its forms stage"};
   std::string file = std::string(QM_DATA_DIR) + "/bunny-open-large.obj";
   double percent = 1.5;

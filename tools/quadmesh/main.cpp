@@ -3,6 +3,7 @@
 #include "io/read_surface.h"
 #include "libquadmesh/core/parallel.h"
 #include "tools/common/exit_codes.h"
+#include "tools/common/heap_settings.h"
 #include "tools/common/usage_error.h"
 #include "tools/quadmesh/commands.h"
 #include "tools/quadmesh/library_wording.h"
@@ -332,6 +333,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  qm::tools::keep_freed_memory();
   try {
     return run(argc, argv);
   } catch (const UsageError& e) {  // a bad option value or output path
