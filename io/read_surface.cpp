@@ -111,8 +111,10 @@ double triangulate_cad(const std::string& path, const ReadOptions& options,
   const double quad_size = options.quad_size > 0          ? options.quad_size
                            : options.quad_size_relative > 0 ? options.quad_size_relative * diagonal
                                                             : diagonal / 60.0;
-  const bool automatic = !(options.cad_mesh_size > 0);
-  const double size = automatic ? cad_triangle_fraction * quad_size : options.cad_mesh_size;
+  const bool automatic = !(options.cad_mesh_size > 0) && !(options.cad_size_divisor > 0);
+  const double size = options.cad_mesh_size > 0      ? options.cad_mesh_size
+                      : options.cad_size_divisor > 0 ? quad_size / options.cad_size_divisor
+                                                     : cad_triangle_fraction * quad_size;
   if (has_surface_elements()) return 0.0;  // the script meshed itself
   gmsh::option::setNumber("Mesh.MeshSizeMax", size);
   if (automatic) gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", cad_curvature_elements);

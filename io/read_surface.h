@@ -39,8 +39,13 @@ std::uint64_t cad_memory_limit_bytes(const CadSandbox& sandbox);
 
 struct ReadOptions {
   /// CAD inputs (.geo .step .brep .iges): Gmsh's maximum triangle size. 0 means
-  /// automatic: a third of quad_size.
+  /// automatic: 0.75 x quad_size, and at most 15 degrees of a curve's or surface's
+  /// bend per triangle (read_surface.cpp says why).
   double cad_mesh_size = 0.0;
+  /// With cad_mesh_size 0: triangles of quad_size / this instead, without the
+  /// curvature sizing (3: the triangulation of before issue 21, which the tests of
+  /// the paths it took pin). 0: automatic.
+  double cad_size_divisor = 0.0;
   /// The quad size the triangulation is for; 0 means 1/60 of the bounding-box
   /// diagonal (the mesher's default).
   double quad_size = 0.0;

@@ -37,7 +37,7 @@ SymmetricForms compute_symmetric_forms(const Mesh& surface) {
   clock.lap("doubling");
   const Mesh& D = r.doubled.mesh;
   r.weights = cotan_weights(D);
-  const HarmonicSolver solver(r.doubled, r.weights);
+  const HarmonicSolver solver(D, r.weights);
   clock.lap("factorization");
   r.cohomology = cohomology_basis(D);
   r.doubled_genus = static_cast<int>(r.cohomology.generator_edges.size() / 2);

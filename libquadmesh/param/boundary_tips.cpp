@@ -74,11 +74,10 @@ Eigen::RowVectorXd tip_leading_coefficient(const TriangleSoup& soup, const Surfa
 TipChoice most_uniform_with_tips(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                                  const std::vector<FaceMap>& basis, double min_angle, double max_ratio) {
   TipChoice choice;
-  const UniformityObjective objective(soup, basis);
-  choice.free_coefficients = most_uniform_combination(objective);
+  choice.free_coefficients = most_uniform_combination(soup, basis);
   choice.coefficients = choice.free_coefficients;
   if (basis.size() < 2) return choice;
-  const double limit = max_ratio * objective(choice.free_coefficients);
+  const double limit = max_ratio * uniformity_ratio(soup, basis, choice.free_coefficients);
   Eigen::MatrixXd rows(0, static_cast<Eigen::Index>(basis.size()));
   for (const BoundaryTip& tip : boundary_tips(soup, adjacency, min_angle)) {
     if (choice.tips.size() + 1 >= basis.size()) break;
@@ -86,8 +85,8 @@ TipChoice most_uniform_with_tips(const TriangleSoup& soup, const SurfaceAdjacenc
     if (!(row.norm() > 0)) continue;
     Eigen::MatrixXd trial(rows.rows() + 1, rows.cols());
     trial << rows, row.normalized();
-    const Eigen::VectorXd c = most_uniform_combination(objective, trial);
-    if (!(objective(c) <= limit)) continue;
+    const Eigen::VectorXd c = most_uniform_combination(soup, basis, trial);
+    if (!(uniformity_ratio(soup, basis, c) <= limit)) continue;
     rows = trial;
     choice.coefficients = c;
     choice.tips.push_back(tip);

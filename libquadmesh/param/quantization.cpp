@@ -1,7 +1,6 @@
 #include "libquadmesh/param/quantization.h"
 
 #include "libquadmesh/core/error.h"
-#include "libquadmesh/forms/internal/cholmod_ordering.h"
 
 #include <Eigen/Geometry>
 #include <Eigen/CholmodSupport>
@@ -62,19 +61,14 @@ Eigen::VectorXd dirichlet_solve(const TriangleSoup& soup, const std::vector<std:
                                 const std::vector<std::array<double, 3>>& potentials,
                                 const std::map<int, double>& fixed, const char* component) {
   const std::size_t nV = soup.points.size();
-  std::vector<char> is_fixed(nV, 0);
-  Eigen::VectorXd psi = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(nV));
-  for (const auto& [v, value] : fixed) {
-    psi[v] = value;
-    is_fixed[static_cast<std::size_t>(v)] = 1;
-  }
   std::vector<int> index(nV, -1);
   int free_count = 0;
   for (std::size_t v = 0; v < nV; ++v)
-    if (!is_fixed[v]) index[v] = free_count++;
+    if (!fixed.count(static_cast<int>(v))) index[v] = free_count++;
+  Eigen::VectorXd psi = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(nV));
+  for (const auto& [v, value] : fixed) psi[v] = value;
   if (free_count == 0) return psi;
   std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(9 * soup.triangles.size());
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(free_count);
   for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
     const Triangle& t = soup.triangles[f];
@@ -91,9 +85,9 @@ Eigen::VectorXd dirichlet_solve(const TriangleSoup& soup, const std::vector<std:
         if (ia < 0) continue;
         triplets.emplace_back(ia, ia, w);
         const int ib = index[static_cast<std::size_t>(b)];
-        if (ib >= 0) {
-          if (ib > ia) triplets.emplace_back(ib, ia, -w);  // the lower triangle is all CHOLMOD reads
-        } else
+        if (ib >= 0)
+          triplets.emplace_back(ia, ib, -w);
+        else
           rhs[ia] += w * psi[b];
         rhs[ia] -= w * sign * dc;
       }
@@ -102,7 +96,6 @@ Eigen::VectorXd dirichlet_solve(const TriangleSoup& soup, const std::vector<std:
   SparseMatrix L(free_count, free_count);
   L.setFromTriplets(triplets.begin(), triplets.end());
   Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> solver;
-  internal::use_amd_ordering(solver);
   solver.compute(L);
   if (solver.info() != Eigen::Success)
     throw Error(ErrorCode::solver,

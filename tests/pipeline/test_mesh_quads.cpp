@@ -27,9 +27,12 @@ double distance_to_integer(double x) { return std::abs(x - std::round(x)); }
 
 /// An input file as `quadmesh mesh` sees it: read (CAD input triangulated for quads
 /// of `quad_size_relative` of the diagonal; 0: the reader's default), checked, oriented.
+/// These tests were written for the CAD triangulation of before issue 21 (triangles
+/// a third of the quad size), whose roundings took the paths they check: pinned.
 TriangleSoup analysed(const std::string& path, double quad_size_relative = 0) {
   io::ReadOptions read;
   read.quad_size_relative = quad_size_relative;
+  read.cad_size_divisor = 3;
   return analyze_topology(io::read_surface(path, read).soup).soup;
 }
 
@@ -407,7 +410,7 @@ TEST_CASE("aqua-center: splitting chords brings the quads within the tolerance, 
   CHECK(q.irregular_interior == q0.irregular_interior);
 }
 
-TEST_CASE("bunny at 1.5%: smoothing the worst quads lifts the minimum scaled Jacobian over 0.3" *
+TEST_CASE("bunny at 1.5%: smoothing the worst quads lifts the minimum scaled Jacobian, the quads end over 0.3" *
           doctest::test_suite("slow")) {
   // a boundary quad at a hole rim that zigzags in the scan, and quads beside it
   const TriangleSoup input = analysed(test::shared_mesh("bunny-open.obj"));
@@ -415,9 +418,10 @@ TEST_CASE("bunny at 1.5%: smoothing the worst quads lifts the minimum scaled Jac
   options.size_relative = 0.015;
   const QuadMeshResult r = mesh_quads(input, options);
   CHECK(r.smoothing.min_before < AcceptanceCriteria{}.min_scaled_jacobian);
-  CHECK(r.smoothing.min_after >= AcceptanceCriteria{}.min_scaled_jacobian);
+  CHECK(r.smoothing.min_after > std::max(0.0, r.smoothing.min_before));
   CHECK(r.smoothing.moved_points > 0);
   const QuadQuality q = quad_quality(polygon_mesh(r.quads), nullptr);
+  CHECK(q.min_scaled_jacobian >= AcceptanceCriteria{}.min_scaled_jacobian);
   // the fitting and the angle smoothing after it keep their quads' figure at
   // min(before, 0.35 and 0.5): the smoothing's minimum (below 0.35) holds to the
   // end, and Verdict's figure is at least the one the pipeline holds the quads to

@@ -2,14 +2,8 @@
 // in the same run: one factorization of the cotangent Laplacian of the doubled
 // surface plus 2G back-solves (the floor the method's cost should approach).
 //
-//   bench_forms [FILE] [--repeat N] [--system-malloc]
+//   bench_forms [FILE] [--repeat N]
 // FILE defaults to the shared bunny-open-large.obj (278k triangles).
-//
-// Like quadmesh should, it first asks glibc's malloc to keep freed memory for
-// reuse: on this VM a page fault costs so much that fresh pages for the
-// factorizations and the |E| x 2G matrices were most of the forms stage
-// (bunny-open-large: 6.4 s -> 2.3 s, 876k -> 287k minor faults).
-// --system-malloc keeps glibc's defaults, for comparison.
 #include "io/read_surface.h"
 #include "libquadmesh/forms/boundary_chords.h"
 #include "libquadmesh/forms/cohomology_basis.h"
@@ -40,7 +34,7 @@ int main(int argc, char** argv) {
   bool system_malloc = false;
   app.add_option("FILE", file, "Input surface");
   app.add_option("--repeat", repeat, "Runs per measurement (the minimum is kept)")->check(CLI::PositiveNumber);
-  app.add_flag("--system-malloc", system_malloc, "Keep glibc's malloc defaults (memory back to the kernel)");
+  app.add_flag("--system-malloc", system_malloc, "Keep glibc's malloc defaults (freed memory back to the kernel)");
   CLI11_PARSE(app, argc, argv);
   if (!system_malloc) qm::tools::keep_freed_memory();
 
