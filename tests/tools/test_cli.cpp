@@ -223,10 +223,11 @@ TEST_CASE("mesh: quads whose boundary strays from the input's are written with o
   // from the plate's edge, with two boundary zeros on its far side; the rounding
   // leaves quads whose boundary cuts across that hole's arc, with the input's Euler
   // characteristic and loops (at 1.5% it meets every criterion). On the CAD
-  // triangulation of before issue 21 (a third of the quad size: 1.2% of the 158.1
-  // diagonal / 3); the default one gives no stray point there
-  const WrittenMesh m =
-      mesh_geo(test::scratch_dir("cli_stray"), test::edge_hole_plate_geo(), "1.2%", " --cad-mesh-size 0.632456");
+  // triangulation of before issue 21 (a third of the quad size: 1.2% of Gmsh's
+  // 158.1138832614 diagonal / 3, to the last digit: a size 1e-6 larger leaves no
+  // stray point); the default one gives none there
+  const WrittenMesh m = mesh_geo(test::scratch_dir("cli_stray"), test::edge_hole_plate_geo(), "1.2%",
+                                 " --cad-mesh-size 0.6324555330456047");
   const int stray = m.report["extraction"]["stray_boundary_points"].get<int>();
   CHECK(stray > 0);
   CHECK(m.report["quality"]["euler_characteristic"].get<int>() == -5);
