@@ -410,7 +410,7 @@ TEST_CASE("aqua-center: splitting chords brings the quads within the tolerance, 
   CHECK(q.irregular_interior == q0.irregular_interior);
 }
 
-TEST_CASE("bunny at 1.5%: smoothing the worst quads lifts the minimum scaled Jacobian, the quads end over 0.3" *
+TEST_CASE("bunny at 1.5%: smoothing the worst quads lifts the minimum scaled Jacobian over 0.3" *
           doctest::test_suite("slow")) {
   // a boundary quad at a hole rim that zigzags in the scan, and quads beside it
   const TriangleSoup input = analysed(test::shared_mesh("bunny-open.obj"));
@@ -418,7 +418,7 @@ TEST_CASE("bunny at 1.5%: smoothing the worst quads lifts the minimum scaled Jac
   options.size_relative = 0.015;
   const QuadMeshResult r = mesh_quads(input, options);
   CHECK(r.smoothing.min_before < AcceptanceCriteria{}.min_scaled_jacobian);
-  CHECK(r.smoothing.min_after > std::max(0.0, r.smoothing.min_before));
+  CHECK(r.smoothing.min_after >= AcceptanceCriteria{}.min_scaled_jacobian);
   CHECK(r.smoothing.moved_points > 0);
   const QuadQuality q = quad_quality(polygon_mesh(r.quads), nullptr);
   CHECK(q.min_scaled_jacobian >= AcceptanceCriteria{}.min_scaled_jacobian);
