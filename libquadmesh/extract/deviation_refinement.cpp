@@ -104,6 +104,11 @@ double quad_to_surface(const TriangleTree& surface, const std::array<Vec3, 4>& c
   return d;
 }
 
+std::vector<double> quads_to_surface(const TriangleTree& surface, const LatticeQuads& quads) {
+  return parallel_map<double>(quads.quads.size(),
+                              [&](std::size_t k) { return quad_to_surface(surface, quad_corners(quads, k)); });
+}
+
 std::array<Vec3, 7> quad_deviation_samples(const std::array<Vec3, 4>& p) {
   return {(p[0] + p[1] + p[2] + p[3]) / 4, (p[0] + p[1] + p[2]) / 3, (p[0] + p[2] + p[3]) / 3, (p[0] + p[1]) / 2,
           (p[1] + p[2]) / 2, (p[2] + p[3]) / 2, (p[3] + p[0]) / 2};
@@ -115,15 +120,13 @@ std::vector<double> quad_deviation(const TriangleTree& surface, const std::vecto
   if (q.quads.empty()) return out;
   const TriangleTree quads = quad_triangle_tree(q);
   if (quads.empty()) return out;
-  const std::vector<std::pair<Vec3, int>> nearest = parallel_map<std::pair<Vec3, int>>(
-      surface_samples.size(), [&](std::size_t i) { return quads.closest(surface_samples[i]); });
+  const std::vector<std::pair<Vec3, int>> nearest = quads.closest_to_each(surface_samples);
   for (std::size_t i = 0; i < surface_samples.size(); ++i) {
     const auto& [p, k] = nearest[i];
     double& d = out[static_cast<std::size_t>(k)];
     d = std::max(d, (p - surface_samples[i]).norm());
   }
-  const std::vector<double> side =
-      parallel_map<double>(q.quads.size(), [&](std::size_t k) { return quad_to_surface(surface, quad_corners(q, k)); });
+  const std::vector<double> side = quads_to_surface(surface, q);
   for (std::size_t k = 0; k < q.quads.size(); ++k) out[k] = std::max(out[k], side[k]);
   return out;
 }

@@ -58,6 +58,8 @@ TriangleTree quad_triangle_tree(const LatticeQuads& quads);
 /// The quad's side of the deviation: the largest distance from its
 /// quad_deviation_samples() to S (`surface`: a tree on S's triangles).
 double quad_to_surface(const TriangleTree& surface, const std::array<Vec3, 4>& corners);
+/// quad_to_surface() of every quad, in order, on the worker threads (core/parallel.h).
+std::vector<double> quads_to_surface(const TriangleTree& surface, const LatticeQuads& quads);
 
 /// Per quad, the estimated deviation: the largest distance from a sample of the quad
 /// (its two triangles split along the diagonal v0v2, as in the quality module) to S,

@@ -1,7 +1,6 @@
 #include "libquadmesh/extract/quad_angle_smoothing.h"
 
 #include "libquadmesh/core/error.h"
-#include "libquadmesh/core/parallel.h"
 #include "libquadmesh/extract/internal/closest_location.h"
 #include "libquadmesh/extract/internal/quad_star.h"
 #include "libquadmesh/extract/deviation_refinement.h"
@@ -36,18 +35,16 @@ Distances distances(const TriangleSoup& surface, const TriangleTree& tree, const
   Distances d;
   const TriangleTree quad_tree = quad_triangle_tree(quads);
   if (quad_tree.empty()) return d;
-  const std::size_t n = watched ? watched->size() : surface.points.size();
-  auto point = [&](std::size_t i) -> const Vec3& {
-    return surface.points[watched ? static_cast<std::size_t>((*watched)[i]) : i];
-  };
-  const std::vector<std::pair<Vec3, int>> nearest =
-      parallel_map<std::pair<Vec3, int>>(n, [&](std::size_t i) { return quad_tree.closest(point(i)); });
-  for (std::size_t i = 0; i < n; ++i) {
-    d.vertex.push_back((nearest[i].first - point(i)).norm());
+  std::vector<Vec3> watched_points;
+  if (watched)
+    for (int v : *watched) watched_points.push_back(surface.points[static_cast<std::size_t>(v)]);
+  const std::vector<Vec3>& points = watched ? watched_points : surface.points;
+  const std::vector<std::pair<Vec3, int>> nearest = quad_tree.closest_to_each(points);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    d.vertex.push_back((nearest[i].first - points[i]).norm());
     d.nearest.push_back(nearest[i].second);
   }
-  d.quad = parallel_map<double>(quads.quads.size(),
-                                [&](std::size_t k) { return quad_to_surface(tree, quad_corners(quads, k)); });
+  d.quad = quads_to_surface(tree, quads);
   return d;
 }
 
@@ -77,27 +74,27 @@ std::vector<int> watched_vertices(const Distances& before, double max_deviation)
   return watched;
 }
 
-/// The sum of the angle deviations |angle - 90| (degrees) of the corners of the
-/// quads around v, with v at p.
-double angle_deviation_sum(const QuadStar& star, int v, const Vec3& p) {
+/// The angle deviations |angle - 90| (degrees) of the corners of the quads
+/// around v, with v at p: their sum and the largest.
+struct AngleDeviations {
   double sum = 0;
+  double largest = 0;
+};
+
+AngleDeviations angle_deviations(const QuadStar& star, int v, const Vec3& p) {
+  AngleDeviations d;
   for (int q : star.quads_at[static_cast<std::size_t>(v)]) {
     const std::array<Vec3, 4> c = quad_corners(star.quads, static_cast<std::size_t>(q), v, p);
-    for (std::size_t k = 0; k < 4; ++k) sum += std::abs(corner_angle_deg(c[(k + 3) % 4], c[k], c[(k + 1) % 4]) - 90.0);
+    for (std::size_t k = 0; k < 4; ++k) {
+      const double deviation = std::abs(corner_angle_deg(c[(k + 3) % 4], c[k], c[(k + 1) % 4]) - 90.0);
+      d.sum += deviation;
+      d.largest = std::max(d.largest, deviation);
+    }
   }
-  return sum;
+  return d;
 }
 
-/// The largest angle deviation |angle - 90| (degrees) among the corners of the quads around v.
-double largest_angle_deviation(const QuadStar& star, int v) {
-  double largest = 0;
-  for (int q : star.quads_at[static_cast<std::size_t>(v)]) {
-    const std::array<Vec3, 4> c = quad_corners(star.quads, static_cast<std::size_t>(q));
-    for (std::size_t k = 0; k < 4; ++k)
-      largest = std::max(largest, std::abs(corner_angle_deg(c[(k + 3) % 4], c[k], c[(k + 1) % 4]) - 90.0));
-  }
-  return largest;
-}
+double angle_deviation_sum(const QuadStar& star, int v, const Vec3& p) { return angle_deviations(star, v, p).sum; }
 
 /// The move of the regular point v: a step down the numerical gradient of
 /// angle_deviation_sum in the plane normal to normals[v], backtracking until the
@@ -110,7 +107,8 @@ std::optional<std::pair<Vec3, SurfaceLocation>> angle_move(const TriangleSoup& s
                                                            const QuadAngleSmoothingOptions& options, int v) {
   const LatticeQuads& quads = star.quads;
   const std::size_t vi = static_cast<std::size_t>(v);
-  if (largest_angle_deviation(star, v) < options.min_corner_deviation_deg) return std::nullopt;
+  const AngleDeviations at_start = angle_deviations(star, v, quads.points[vi]);
+  if (at_start.largest < options.min_corner_deviation_deg) return std::nullopt;
   const auto worst = [&](const Vec3& p) { return worst_corner_jacobian(quads, star.quads_at[vi], v, p, normals); };
   const Vec3 here = quads.points[vi];
   double edge = std::numeric_limits<double>::infinity();
@@ -118,7 +116,7 @@ std::optional<std::pair<Vec3, SurfaceLocation>> angle_move(const TriangleSoup& s
     for (int u : quads.quads[static_cast<std::size_t>(q)])
       if (u != v) edge = std::min(edge, (quads.points[static_cast<std::size_t>(u)] - here).norm());
   if (!(edge > 0) || !std::isfinite(edge)) return std::nullopt;
-  const double now = angle_deviation_sum(star, v, here);
+  const double now = at_start.sum;
   // the gradient in the tangent plane, by central differences
   const Vec3& n = normals[vi];
   if (n.squaredNorm() == 0) return std::nullopt;

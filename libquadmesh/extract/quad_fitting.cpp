@@ -1,7 +1,6 @@
 #include "libquadmesh/extract/quad_fitting.h"
 
 #include "libquadmesh/core/error.h"
-#include "libquadmesh/core/parallel.h"
 #include "libquadmesh/extract/internal/closest_location.h"
 #include "libquadmesh/extract/internal/quad_star.h"
 #include "libquadmesh/extract/deviation_refinement.h"
@@ -101,14 +100,12 @@ struct Deviation {
 Deviation measure_deviation(const TriangleSoup& surface, const TriangleTree& surface_tree,
                             const TriangleTree& quad_tree, const LatticeQuads& quads, double tolerance) {
   Deviation d;
-  d.quad_side = parallel_map<double>(quads.quads.size(),
-                                     [&](std::size_t k) { return quad_to_surface(surface_tree, quad_corners(quads, k)); });
+  d.quad_side = quads_to_surface(surface_tree, quads);
   d.samples = deviation_samples(surface, tolerance);
   d.distance.resize(d.samples.size());
   d.nearest.resize(d.samples.size());
   d.samples_of.resize(quads.quads.size());
-  const std::vector<std::pair<Vec3, int>> nearest = parallel_map<std::pair<Vec3, int>>(
-      d.samples.size(), [&](std::size_t s) { return quad_tree.closest(d.samples[s]); });
+  const std::vector<std::pair<Vec3, int>> nearest = quad_tree.closest_to_each(d.samples);
   for (std::size_t s = 0; s < d.samples.size(); ++s) {
     const auto& [p, k] = nearest[s];
     d.distance[s] = (p - d.samples[s]).norm();

@@ -1,8 +1,7 @@
 #include "libquadmesh/quality/hausdorff.h"
 
-#include "libquadmesh/core/parallel.h"
-
 #include "libquadmesh/core/error.h"
+#include "libquadmesh/core/parallel.h"
 #include "libquadmesh/quality/internal/triangle_tree.h"
 
 #include <algorithm>

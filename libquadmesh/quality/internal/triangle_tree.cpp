@@ -1,6 +1,7 @@
 #include "libquadmesh/quality/internal/triangle_tree.h"
 
 #include "libquadmesh/core/error.h"
+#include "libquadmesh/core/parallel.h"
 
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -67,6 +68,10 @@ std::pair<Vec3, int> TriangleTree::closest(const Vec3& p) const {
   const auto hit = impl_->tree->closest_point_and_primitive(cgal(p));
   return {eigen(hit.first),
           impl_->ids[static_cast<std::size_t>(hit.second - impl_->triangles.cbegin())]};
+}
+
+std::vector<std::pair<Vec3, int>> TriangleTree::closest_to_each(const std::vector<Vec3>& points) const {
+  return parallel_map<std::pair<Vec3, int>>(points.size(), [&](std::size_t i) { return closest(points[i]); });
 }
 
 double TriangleTree::squared_distance(const Vec3& p) const {

@@ -29,6 +29,9 @@ class TriangleTree {
   bool empty() const;
   /// The closest point on the triangles and the id of its triangle (not empty()).
   std::pair<Vec3, int> closest(const Vec3& p) const;
+  /// closest() of each point, in order, the points shared out over the worker
+  /// threads (core/parallel.h: the same answers whatever their number).
+  std::vector<std::pair<Vec3, int>> closest_to_each(const std::vector<Vec3>& points) const;
   double squared_distance(const Vec3& p) const;
 
  private:
