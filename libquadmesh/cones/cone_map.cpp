@@ -43,6 +43,11 @@ ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, co
                 "boundary loop " + std::to_string(out.field.misaligned_loop) + " is turned by " +
                     std::to_string(out.field.max_misalignment * 180 / M_PI) +
                     " degrees against the cones' cross field: these cones give no quad mesh");
+  if (out.field.max_seam_misalignment > 1e-6)
+    throw Error(ErrorCode::unsupported,
+                "the cones' cross field misses itself by " +
+                    std::to_string(out.field.max_seam_misalignment * 180 / M_PI) +
+                    " degrees around a handle: these cones give no quad mesh");
   out.cut = cut_graph(soup, adjacency, out.field, out.quads);
   // u has a logarithmic singularity at an interior cone; its value there is the
   // discretization's, not the metric's, and would shrink (valence 5) or swell

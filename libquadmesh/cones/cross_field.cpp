@@ -2,10 +2,14 @@
 
 #include "libquadmesh/cones/cone_metric.h"
 #include "libquadmesh/cones/cone_set.h"
+#include "libquadmesh/cones/handle_alignment.h"
 #include "libquadmesh/cones/internal/face_geometry.h"
 #include "libquadmesh/cones/loop_alignment.h"
 #include "libquadmesh/core/error.h"
 
+#include <Eigen/QR>
+
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <queue>
@@ -106,6 +110,7 @@ std::vector<double> classify_sides(const TriangleSoup& soup, const SurfaceAdjace
   field.quarter_turns.assign(nF, {0, 0, 0});
   field.boundary_axis.assign(nF, {-1, -1, -1});
   field.max_misalignment = 0;
+  field.max_seam_misalignment = 0;
   field.misaligned_loop = -1;
   std::vector<double> loop_offset(adjacency.boundary_loops.size(), 0.0);
   std::vector<char> loop_seen(adjacency.boundary_loops.size(), 0);
@@ -129,6 +134,7 @@ std::vector<double> classify_sides(const TriangleSoup& soup, const SurfaceAdjace
       const double jump = field.angle[static_cast<std::size_t>(g.face)] -
                           transported(soup, frames, u, f, k, g, field.angle[f], extra);
       field.max_misalignment = std::max(field.max_misalignment, std::abs(quarter_turn_remainder(jump)));
+      field.max_seam_misalignment = std::max(field.max_seam_misalignment, std::abs(quarter_turn_remainder(jump)));
       // g's frame is f's transported frame turned by jump = r quarter turns; the
       // charts W = e^(-i angle) x then differ by i^(-r)
       field.quarter_turns[f][static_cast<std::size_t>(k)] = modulo4(-whole_quarter_turns(jump));
@@ -147,6 +153,99 @@ LocalFrames local_frames(const TriangleSoup& soup) {
     frames.cot[f] = corner_cotangents(soup, f);
   }
   return frames;
+}
+
+/// Per triangle, the sum of `turn` along the field's tree from `seed`.
+std::vector<double> tree_integral(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const CrossField& field,
+                                  int seed, const ExtraTurn& turn) {
+  std::vector<double> sum(soup.triangles.size(), 0.0);
+  std::vector<char> reached(soup.triangles.size(), 0);
+  reached[static_cast<std::size_t>(seed)] = 1;
+  std::queue<int> queue;
+  queue.push(seed);
+  while (!queue.empty()) {
+    const auto f = static_cast<std::size_t>(queue.front());
+    queue.pop();
+    const Triangle& t = soup.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      if (!field.tree_side[f][static_cast<std::size_t>(k)]) continue;
+      const EdgeCorner g = adjacency.find(t[(k + 1) % 3], t[k]);
+      if (g.face < 0 || reached[static_cast<std::size_t>(g.face)]) continue;
+      reached[static_cast<std::size_t>(g.face)] = 1;
+      sum[static_cast<std::size_t>(g.face)] = sum[f] + turn(f, g);
+      queue.push(g.face);
+    }
+  }
+  return sum;
+}
+
+/// The turn of a SideForm crossing from f into g.
+ExtraTurn side_form_turn(const SideForm& form) {
+  return [&form](std::size_t, const EdgeCorner& g) {
+    return -form[static_cast<std::size_t>(g.face)][static_cast<std::size_t>(g.i)];
+  };
+}
+
+/// The coefficient of each handle form that makes the field, as propagated with
+/// `extra`, close around every handle. Across an inner edge the tree does not
+/// cross, the field jumps by J (the holonomy of the edge's loop through the tree);
+/// adding sum_k c_k form_k lowers J by sum_k c_k P_k, P_k the form's period along
+/// that loop (an intersection number). The loops whose periods are independent
+/// (fewest crossings first) give the square system sum_k c_k P_k = remainder(J).
+std::vector<double> handle_coefficients(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                        const LocalFrames& frames, const Eigen::VectorXd& u, int seed,
+                                        const ExtraTurn& extra, const std::vector<SideForm>& forms,
+                                        const CrossField& field) {
+  const std::size_t m = forms.size();
+  std::vector<std::vector<double>> integral;
+  for (const SideForm& form : forms) integral.push_back(tree_integral(soup, adjacency, field, seed, side_form_turn(form)));
+  struct Loop {
+    Eigen::VectorXd period;
+    double remainder = 0;
+    double crossings = 0;
+  };
+  std::vector<Loop> loops;
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
+    const Triangle& t = soup.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      const EdgeCorner g = adjacency.find(t[(k + 1) % 3], t[k]);
+      if (g.face < static_cast<int>(f) || field.tree_side[f][static_cast<std::size_t>(k)]) continue;
+      Loop loop{Eigen::VectorXd(static_cast<Eigen::Index>(m)), 0.0, 0.0};
+      for (std::size_t c = 0; c < m; ++c) {
+        const double p = integral[c][f] + side_form_turn(forms[c])(f, g) - integral[c][static_cast<std::size_t>(g.face)];
+        loop.period[static_cast<Eigen::Index>(c)] = std::round(p);
+        loop.crossings += std::abs(std::round(p));
+      }
+      if (loop.crossings == 0) continue;
+      const double jump = field.angle[static_cast<std::size_t>(g.face)] -
+                          transported(soup, frames, u, f, k, g, field.angle[f], extra);
+      loop.remainder = quarter_turn_remainder(jump);
+      loops.push_back(std::move(loop));
+    }
+  }
+  std::stable_sort(loops.begin(), loops.end(), [](const Loop& a, const Loop& b) { return a.crossings < b.crossings; });
+  // independent periods by Gram-Schmidt
+  std::vector<Eigen::VectorXd> basis;
+  std::vector<const Loop*> chosen;
+  for (const Loop& loop : loops) {
+    if (chosen.size() == m) break;
+    Eigen::VectorXd r = loop.period;
+    for (const Eigen::VectorXd& b : basis) r -= r.dot(b) * b;
+    if (r.norm() < 1e-6) continue;
+    basis.push_back(r / r.norm());
+    chosen.push_back(&loop);
+  }
+  std::vector<double> c(m, 0.0);
+  if (chosen.empty()) return c;
+  Eigen::MatrixXd A(static_cast<Eigen::Index>(chosen.size()), static_cast<Eigen::Index>(m));
+  Eigen::VectorXd b(static_cast<Eigen::Index>(chosen.size()));
+  for (std::size_t r = 0; r < chosen.size(); ++r) {
+    A.row(static_cast<Eigen::Index>(r)) = chosen[r]->period.transpose();
+    b[static_cast<Eigen::Index>(r)] = chosen[r]->remainder;
+  }
+  const Eigen::VectorXd solution = A.completeOrthogonalDecomposition().solve(b);
+  for (std::size_t k = 0; k < m; ++k) c[k] = solution[static_cast<Eigen::Index>(k)];
+  return c;
 }
 
 }  // namespace
@@ -200,7 +299,17 @@ CrossField cone_cross_field(const TriangleSoup& soup, const SurfaceAdjacency& ad
   CrossField field;
   const ExtraTurn none = [](std::size_t, const EdgeCorner&) { return 0.0; };
   propagate(soup, adjacency, frames, u, seed, seed_angle, none, field);
-  const std::vector<double> offset = classify_sides(soup, adjacency, frames, u, none, field);
+  // the handles first (their forms keep every boundary loop where it is)
+  const std::vector<SideForm> handles = handle_forms(soup, adjacency);
+  SideForm handle_turn;
+  ExtraTurn base = none;
+  if (!handles.empty()) {
+    field.handle_rotation = handle_coefficients(soup, adjacency, frames, u, seed, none, handles, field);
+    handle_turn = combined_form(handles, field.handle_rotation);
+    base = side_form_turn(handle_turn);
+    propagate(soup, adjacency, frames, u, seed, seed_angle, base, field);
+  }
+  const std::vector<double> offset = classify_sides(soup, adjacency, frames, u, base, field);
   field.loop_rotation.assign(adjacency.boundary_loops.size(), 0.0);
   if (adjacency.boundary_loops.size() <= 1) return field;
 
@@ -216,7 +325,7 @@ CrossField cone_cross_field(const TriangleSoup& soup, const SurfaceAdjacency& ad
   }
   const Eigen::VectorXd potential = phi * c;
   const ExtraTurn extra = [&](std::size_t f, const EdgeCorner& g) {
-    return potential[g.face] - potential[static_cast<Eigen::Index>(f)];
+    return base(f, g) + potential[g.face] - potential[static_cast<Eigen::Index>(f)];
   };
   propagate(soup, adjacency, frames, u, seed, seed_angle, extra, field);
   classify_sides(soup, adjacency, frames, u, extra, field);

@@ -10,9 +10,10 @@
 // Angles are propagated along a breadth-first tree of the triangles from a
 // boundary triangle, whose frame is put along its boundary edge; across the other
 // edges the frames differ by whole quarter turns, which are the rotations of the
-// map's transitions (seamless_map.h). On a surface with several boundary loops the
-// field meets the other loops turned by some angle: a trivial connection
-// (loop_alignment.h) turns it back, keeping every cone.
+// map's transitions (seamless_map.h). On a surface with handles the field meets
+// itself around each handle turned by some angle, and on a surface with several
+// boundary loops it meets the other loops turned: trivial connections
+// (handle_alignment.h, then loop_alignment.h) turn it back, keeping every cone.
 #pragma once
 
 #include "libquadmesh/param/internal/surface_adjacency.h"
@@ -44,6 +45,12 @@ struct CrossField {
   /// per boundary loop, the rotation (radians, |.| <= pi/4) that the trivial
   /// connection of loop_alignment.h adds to align it; 0 for the reference loop
   std::vector<double> loop_rotation;
+  /// per handle form of handle_alignment.h, the rotation (radians) it adds
+  std::vector<double> handle_rotation;
+  /// the largest deviation (radians) from a whole quarter turn across an inner
+  /// edge the tree does not cross: ~0 when the field closes around every cone and
+  /// handle
+  double max_seam_misalignment = 0;
 };
 
 class ConeMetricSolver;
