@@ -23,6 +23,8 @@ namespace {
 constexpr int max_alignment_passes = 8;
 /// Sum of the loops' turns (radians) below which the cones stay where they are.
 constexpr double alignment_goal = 1e-3;
+/// Alignment moves reach at most this many times `alignment_rings` edges.
+constexpr int max_widening = 3;
 
 /// Per vertex, a third of the area of its triangles.
 std::vector<double> vertex_areas(const TriangleSoup& soup) {
@@ -108,34 +110,39 @@ double align_loops_by_cones(const TriangleSoup& soup, const SurfaceAdjacency& ad
     return c;
   };
   double current = cost(dot);
-  for (int pass = 0; pass < max_alignment_passes && current > alignment_goal; ++pass) {
-    bool moved = false;
-    for (Cone& cone : cones) {
-      if (adjacency.boundary_vertex[static_cast<std::size_t>(cone.vertex)]) continue;
-      const double k = (4 - cone.quads) * quarter_turn;
-      int best = -1;
-      std::vector<double> best_dot;
-      const std::vector<char> near = crowded(soup, adjacency, cones, &cone - cones.data(), separation);
-      for (int w : ring_neighbourhood(soup, adjacency, cone.vertex, rings)) {
-        const auto sw = static_cast<std::size_t>(w);
-        if (near[sw] || !eligible[sw]) continue;
-        std::vector<double> trial = dot;
-        for (std::size_t l = 0; l < loops; ++l)
-          if (static_cast<int>(l) != model.reference)
-            trial[l] += k * (model.gradient[l][w] - model.gradient[l][cone.vertex]);
-        const double c = cost(trial);
-        if (c < current - 1e-9) {
-          current = c;
-          best = w;
-          best_dot = trial;
+  // when no move within `rings` edges helps any more and the loops are still
+  // turned, the cones may go farther (on a coarse triangulation `rings` edges
+  // are a few quads only)
+  for (int widen = 1; widen <= max_widening && current > alignment_goal; ++widen) {
+    for (int pass = 0; pass < max_alignment_passes && current > alignment_goal; ++pass) {
+      bool moved = false;
+      for (Cone& cone : cones) {
+        if (adjacency.boundary_vertex[static_cast<std::size_t>(cone.vertex)]) continue;
+        const double k = (4 - cone.quads) * quarter_turn;
+        int best = -1;
+        std::vector<double> best_dot;
+        const std::vector<char> near = crowded(soup, adjacency, cones, &cone - cones.data(), separation);
+        for (int w : ring_neighbourhood(soup, adjacency, cone.vertex, widen * rings)) {
+          const auto sw = static_cast<std::size_t>(w);
+          if (near[sw] || !eligible[sw]) continue;
+          std::vector<double> trial = dot;
+          for (std::size_t l = 0; l < loops; ++l)
+            if (static_cast<int>(l) != model.reference)
+              trial[l] += k * (model.gradient[l][w] - model.gradient[l][cone.vertex]);
+          const double c = cost(trial);
+          if (c < current - 1e-9) {
+            current = c;
+            best = w;
+            best_dot = trial;
+          }
         }
+        if (best < 0) continue;
+        cone.vertex = best;
+        dot = best_dot;
+        moved = true;
       }
-      if (best < 0) continue;
-      cone.vertex = best;
-      dot = best_dot;
-      moved = true;
+      if (!moved) break;
     }
-    if (!moved) break;
   }
   double worst = 0;
   for (std::size_t l = 0; l < loops; ++l)

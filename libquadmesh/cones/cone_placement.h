@@ -42,7 +42,8 @@ struct ConePlacementOptions {
   /// within this of the extreme, where the field meets the loops best.
   double extreme_tolerance = 0.15;
   /// Then a cone may move this far (edges) so that the field meets every loop at
-  /// a whole quarter turn (cross_field.h LoopTurns)...
+  /// a whole quarter turn (cross_field.h LoopTurns); twice and three times as far
+  /// when no nearer move helps and the loops are still turned...
   int alignment_rings = 4;
   /// ...keeping this many edges from the other interior cones.
   int cone_separation = 6;

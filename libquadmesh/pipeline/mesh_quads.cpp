@@ -144,7 +144,16 @@ QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, con
   const double fine_seconds = seconds_since(start);
   if (progress) progress("meshing the input as it is");
   start = std::chrono::steady_clock::now();
-  QuadMeshResult as_is = mesh_quads_on(std::move(soup), options, progress);
+  // where the cone route failed on the finer triangulation it is not tried again
+  // on the coarser one (each try is several seamless maps)
+  const bool cones_failed = fine_ok && !fine.cone_route_failure.empty();
+  QuadMeshOptions as_is_options = options;
+  if (cones_failed) as_is_options.singularities = Singularities::abel;
+  QuadMeshResult as_is = mesh_quads_on(std::move(soup), as_is_options, progress);
+  if (cones_failed) {
+    as_is.cone_route_failure = fine.cone_route_failure;
+    as_is.abel_size_band_share = as_is.size_band_share;
+  }
   const double as_is_seconds = seconds_since(start);
   const bool keep_fine =
       fine_ok && at_least_as_good(assess_candidate(fine), assess_candidate(as_is), topology, options.acceptance);

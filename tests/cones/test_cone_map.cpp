@@ -5,8 +5,10 @@
 #include "libquadmesh/cones/cone_map.h"
 #include "libquadmesh/cones/cone_placement.h"
 #include "libquadmesh/extract/lattice_quads.h"
+#include "libquadmesh/forms/long_edges.h"
 #include "io/read_surface.h"
 #include "libquadmesh/core/error.h"
+#include "libquadmesh/quality/hausdorff.h"
 #include "tests/support/test_meshes.h"
 
 #include <doctest/doctest.h>
@@ -338,4 +340,48 @@ TEST_CASE("a ragged boundary with more corners than cones are allowed is refused
     CHECK(std::string(e.what()).find("63 boundary vertices are corners") != std::string::npos);
     CHECK(std::string(e.what()).find("more than the 24 cones allowed") != std::string::npos);
   }
+}
+
+
+TEST_CASE("chipped torus (genus 1): the handle forms close the field around the handle, complete quads") {
+  // chi = -1, one boundary loop whose four corners turn by 270 degrees: three
+  // quads each and no interior cone. The cone metric's field, propagated along a
+  // tree, misses itself around the handle by about a degree; the handle forms
+  // (handle_alignment.h) take that, and the quads are the lattice cells.
+  // Its triangles are wider than the quads: split as the pipeline does (long_edges.h).
+  TriangleSoup soup = io::read_surface(test::shared_mesh("chipped-torus.obj")).soup;
+  const double size = 0.015 * bounding_box_diagonal(soup.points, soup.triangles);
+  split_long_edges(soup, size);
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  const std::vector<Cone> cones = place_cones(soup, adjacency, size);
+  REQUIRE(cones.size() == 4);
+  for (const Cone& c : cones) CHECK(c.quads == 3);
+  const ConeMap m = cone_map(soup, adjacency, cones, size);
+  REQUIRE(m.field.handle_rotation.size() == 2);
+  CHECK(std::abs(m.field.handle_rotation[0]) + std::abs(m.field.handle_rotation[1]) > 0.1 * M_PI / 180);
+  CHECK(m.field.max_seam_misalignment < 1e-6);
+  CHECK(m.report.inverted_triangles == 0);
+  const LatticeQuads q = complete_quads(soup, adjacency, m.map);
+  CHECK(euler_and_singular(q) == std::pair{-1, 0});
+  check_cone_quads(q, cones);
+}
+
+TEST_CASE("a long L-arm on its automatic CAD triangulation: cones moved farther until the hole is met square" *
+          doctest::test_suite("slow")) {
+  // examples/l-plate-long-arm.geo at 1.5% of the diagonal, triangles 0.75 x the
+  // quads: the four valence-5 cones around the hole at the arm's end left the
+  // field turned by 24 degrees at the hole when they could move 4 edges only, and
+  // the map folded; moving up to three times as far aligns it
+  io::ReadOptions read;
+  read.quad_size = 1.8973665961010275;
+  const TriangleSoup soup = io::read_surface(test::example("l-plate-long-arm.geo"), read).soup;
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  const std::vector<Cone> cones = place_cones(soup, adjacency, read.quad_size);
+  REQUIRE(cones.size() == 10);
+  const ConeMap m = cone_map(soup, adjacency, cones, read.quad_size);
+  for (double r : m.field.loop_rotation) CHECK(std::abs(r) < 1.0 * M_PI / 180);
+  CHECK(m.report.inverted_triangles == 0);
+  const LatticeQuads q = complete_quads(soup, adjacency, m.map);
+  CHECK(euler_and_singular(q) == std::pair{0, 4});
+  check_cone_quads(q, cones);
 }
