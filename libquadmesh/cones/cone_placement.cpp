@@ -233,6 +233,88 @@ void relax_cones_for_size(const TriangleSoup& soup, const SurfaceAdjacency& adja
   }
 }
 
+/// How far the metric's quad size h e^(-(u - mean u)) strays, over the vertices
+/// that are not cones (a cone's own u is the discretization's): the area share
+/// within [0.5, 2] h and the largest ratio to h.
+struct MetricBand {
+  double share = 0;
+  double largest = 0;
+};
+
+MetricBand metric_band(const Eigen::VectorXd& u, const std::vector<double>& area, const std::vector<char>& cone) {
+  double total = 0, sum = 0;
+  for (Eigen::Index v = 0; v < u.size(); ++v)
+    if (!cone[static_cast<std::size_t>(v)]) {
+      total += area[static_cast<std::size_t>(v)];
+      sum += area[static_cast<std::size_t>(v)] * u[v];
+    }
+  const double mean = sum / total;
+  MetricBand band;
+  for (Eigen::Index v = 0; v < u.size(); ++v) {
+    if (cone[static_cast<std::size_t>(v)]) continue;
+    if (std::abs(u[v] - mean) <= std::log(2.0)) band.share += area[static_cast<std::size_t>(v)] / total;
+    band.largest = std::max(band.largest, std::exp(mean - u[v]));
+  }
+  return band;
+}
+
+/// Valence-5 and valence-3 cones in pairs (Gauss-Bonnet kept), at the highest and
+/// the lowest u among the vertices that may take a cone, while the metric's quad
+/// size leaves the band: less than options.pair_band_goal of the area within
+/// [0.5, 2] h, or somewhere above options.pair_largest x h (method.md section 11:
+/// protrusion tips and the ends of arms get the valence-3 cones). Each pair is
+/// weighed after `settle` has moved the cones (loops aligned, sizes evened), and
+/// kept only when the band improves; at most `room` cones are added.
+template <class Settle>
+void add_cone_pairs(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const ConeMetricSolver& solver,
+                    const std::vector<double>& curvature, const std::vector<double>& area,
+                    const std::vector<char>& eligible, double spacing, const Settle& settle,
+                    const ConePlacementOptions& options, int room, std::vector<Cone>& cones) {
+  auto measure = [&](const std::vector<Cone>& set, Eigen::VectorXd& u) {
+    u = solver.solve(target_curvature(adjacency, quads_per_vertex(adjacency, set)), curvature);
+    std::vector<char> mark(area.size(), 0);
+    for (const Cone& c : set) mark[static_cast<std::size_t>(c.vertex)] = 1;
+    return metric_band(u, area, mark);
+  };
+  // a vertex may take a cone when eligible and `spacing` from every interior cone
+  auto free_vertices = [&](const std::vector<Cone>& set) {
+    std::vector<char> free = eligible;
+    for (const Cone& c : set) {
+      if (adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)]) continue;
+      const Vec3& at = soup.points[static_cast<std::size_t>(c.vertex)];
+      for (std::size_t v = 0; v < free.size(); ++v)
+        if ((soup.points[v] - at).squaredNorm() < spacing * spacing) free[v] = 0;
+    }
+    return free;
+  };
+  Eigen::VectorXd u;
+  MetricBand band = measure(cones, u);
+  for (; room >= 2; room -= 2) {
+    if (band.share >= options.pair_band_goal && band.largest <= options.pair_largest) return;
+    const std::vector<char> free = free_vertices(cones);
+    int high = -1, low = -1;
+    for (std::size_t v = 0; v < free.size(); ++v) {
+      if (!free[v]) continue;
+      const auto vi = static_cast<Eigen::Index>(v);
+      if (high < 0 || u[vi] > u[high]) high = static_cast<int>(v);
+      if (low < 0 || u[vi] < u[low]) low = static_cast<int>(v);
+    }
+    if (high < 0 || low < 0) return;
+    const Vec3 between = soup.points[static_cast<std::size_t>(high)] - soup.points[static_cast<std::size_t>(low)];
+    if (between.squaredNorm() < spacing * spacing) return;
+    std::vector<Cone> trial = cones;
+    trial.push_back({high, 5});
+    trial.push_back({low, 3});
+    settle(trial);
+    Eigen::VectorXd trial_u;
+    const MetricBand trial_band = measure(trial, trial_u);
+    if (trial_band.share <= band.share && trial_band.largest >= band.largest) return;
+    cones = std::move(trial);
+    u = std::move(trial_u);
+    band = trial_band;
+  }
+}
+
 /// The cones' curvature, and `deficit` quarter turns more spread over the
 /// interior by area.
 std::vector<double> spread_targets(const SurfaceAdjacency& adjacency, const std::vector<int>& quads,
@@ -263,6 +345,7 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
                               const ConePlacementOptions& options) {
   QM_ASSERT(size > 0);
   std::vector<Cone> cones = corner_cones(soup, adjacency, options);
+  const std::size_t corner_count = cones.size();
   int deficit = 4 * euler_characteristic(adjacency);
   for (const Cone& c : cones) deficit -= 2 - c.quads;
   const std::vector<double> area = vertex_areas(soup);
@@ -278,7 +361,7 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
                             "{:.0f} cones allowed (max({:g}, {:g}% of the quads)): a ragged boundary",
                             cones.size(), options.corner_angle_deg, allowed, options.max_interior_cones,
                             100 * options.max_interior_cone_share));
-  if (deficit == 0) return cones;
+  if (deficit == 0 && !(options.pair_band_goal > 0)) return cones;
 
   const std::vector<double> curvature = vertex_curvature(soup, adjacency);
   if (std::abs(deficit) > allowed)
@@ -346,15 +429,25 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
     take_around(best);
     deficit -= step;
   }
-  if (several_loops)
-    align_loops_by_cones(soup, adjacency, solver, curvature, eligible, options.alignment_rings,
-                         options.cone_separation, cones);
-  if (options.size_relaxation_passes > 0) {
-    relax_cones_for_size(soup, adjacency, solver, curvature, area, eligible, options.cone_separation,
-                         options.size_relaxation_passes, options.relaxation_alignment_slack, cones);
+  // the cones moved to align the loops, then to even the quad sizes
+  const auto settle = [&](std::vector<Cone>& set) {
+    if (set.size() == corner_count) return;
     if (several_loops)
       align_loops_by_cones(soup, adjacency, solver, curvature, eligible, options.alignment_rings,
-                           options.cone_separation, cones);
+                           options.cone_separation, set);
+    if (options.size_relaxation_passes > 0) {
+      relax_cones_for_size(soup, adjacency, solver, curvature, area, eligible, options.cone_separation,
+                           options.size_relaxation_passes, options.relaxation_alignment_slack, set);
+      if (several_loops)
+        align_loops_by_cones(soup, adjacency, solver, curvature, eligible, options.alignment_rings,
+                             options.cone_separation, set);
+    }
+  };
+  settle(cones);
+  if (options.pair_band_goal > 0) {
+    const int interior = static_cast<int>(cones.size() - corner_count);
+    add_cone_pairs(soup, adjacency, solver, curvature, area, eligible, spacing, settle, options,
+                   static_cast<int>(allowed) - interior, cones);
   }
   return cones;
 }

@@ -10,6 +10,9 @@
 // rest of D spread over the interior by area, the cone metric is solved, and the
 // next valence-5 cone goes where u is highest (the quads smallest), a valence-3
 // cone where it is lowest; a cone there pulls u towards the middle of the band.
+// Where the metric's quad size still leaves the band (a protrusion, the end of an
+// arm, a surface whose corners carry all of D), valence-5 and valence-3 cones are
+// added in pairs at the highest and lowest u while the band improves.
 // With several boundary loops the cones are then moved, one at a time and a few
 // edges at most, until the field meets every loop at a whole quarter turn ("fix
 // it by the choice of cones"); what is left the trivial connection of
@@ -47,6 +50,12 @@ struct ConePlacementOptions {
   int alignment_rings = 4;
   /// ...keeping this many edges from the other interior cones.
   int cone_separation = 6;
+  /// Then valence-5 and valence-3 cones in pairs, at the highest and the lowest
+  /// u, while less than this share of the area has the metric's quad size within
+  /// [0.5, 2] x the size (0: no pairs)...
+  double pair_band_goal = 0.95;
+  /// ...or a quad size somewhere above this many times the size.
+  double pair_largest = 3.0;
   /// Then the interior cones move, a ring at a time, while the quad sizes spread
   /// less (the area-weighted variance of the log scale u), for at most this many
   /// sweeps (0: they stay)...

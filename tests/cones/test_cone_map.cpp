@@ -385,3 +385,39 @@ TEST_CASE("a long L-arm on its automatic CAD triangulation: cones moved farther 
   CHECK(euler_and_singular(q) == std::pair{0, 4});
   check_cone_quads(q, cones);
 }
+
+TEST_CASE("aqua-center: valence-3/5 pairs bring the metric's quad size into the band, complete quads" *
+          doctest::test_suite("slow")) {
+  // A scanned part with no corner: Gauss-Bonnet asks for four valence-5 cones,
+  // which leave 83% of the vertices with the metric's quad size within [0.5, 2] x
+  // the size; pairs at the highest and lowest u (method.md section 11) bring it
+  // over 95%, and the map still has no fold.
+  TriangleSoup soup = io::read_surface(test::shared_mesh("aqua-center.off")).soup;
+  const double size = 0.015 * bounding_box_diagonal(soup.points, soup.triangles);
+  split_long_edges(soup, size);
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  auto band = [&](const Eigen::VectorXd& u) {
+    const double mean = u.mean();
+    int in = 0;
+    for (Eigen::Index v = 0; v < u.size(); ++v) in += std::abs(u[v] - mean) <= std::log(2.0);
+    return static_cast<double>(in) / static_cast<double>(u.size());
+  };
+  ConePlacementOptions no_pairs;
+  no_pairs.pair_band_goal = 0;
+  const std::vector<Cone> gauss_bonnet = place_cones(soup, adjacency, size, no_pairs);
+  CHECK(gauss_bonnet.size() == 4);
+  const double before = band(cone_map(soup, adjacency, gauss_bonnet, size).u);
+  CHECK(before < 0.9);
+  const std::vector<Cone> cones = place_cones(soup, adjacency, size);
+  int threes = 0, fives = 0;
+  for (const Cone& c : cones) (c.quads == 3 ? threes : fives) += 1;
+  CHECK(threes >= 1);
+  CHECK(fives == threes + 4);
+  CHECK(cones.size() <= 24);
+  const ConeMap m = cone_map(soup, adjacency, cones, size);
+  CHECK(band(m.u) > 0.95);
+  CHECK(m.report.inverted_triangles == 0);
+  const LatticeQuads q = complete_quads(soup, adjacency, m.map);
+  CHECK(euler_and_singular(q) == std::pair{euler_characteristic(adjacency), static_cast<int>(cones.size())});
+  check_cone_quads(q, cones);
+}

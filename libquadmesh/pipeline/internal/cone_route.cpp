@@ -11,22 +11,26 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
 namespace qm {
 
 std::vector<ConePlacementOptions> cone_placements() {
+  ConePlacementOptions no_pairs;
+  no_pairs.pair_band_goal = 0;
   ConePlacementOptions wider;
   wider.boundary_distance = 2.5;
   wider.cone_spacing = 3.0;
   ConePlacementOptions widest;
   widest.boundary_distance = 3.0;
   widest.cone_spacing = 3.5;
-  return {ConePlacementOptions{}, wider, widest};
+  return {ConePlacementOptions{}, no_pairs, wider, widest};
 }
 
-Candidate cone_attempt(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages) {
+Candidate cone_attempt(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages,
+                       std::vector<std::vector<Cone>>& placed) {
   QuadMeshResult r = setup.preamble;
   const TriangleSoup& soup = setup.soup;
   const double size = setup.preamble.size_requested;
@@ -36,6 +40,13 @@ Candidate cone_attempt(const FormSetup& setup, const ConePlacementOptions& place
                           "{:g} apart)",
                           placement.boundary_distance, placement.cone_spacing));
   r.cones = place_cones(soup, adjacency, size, placement);
+  const auto same = [&](const std::vector<Cone>& other) {
+    return std::equal(other.begin(), other.end(), r.cones.begin(), r.cones.end(),
+                      [](const Cone& a, const Cone& b) { return a.vertex == b.vertex && a.quads == b.quads; });
+  };
+  if (std::any_of(placed.begin(), placed.end(), same))
+    throw Error(ErrorCode::unsupported, "the same cones as a placement tried before");
+  placed.push_back(r.cones);
   int corners = 0;
   for (const Cone& c : r.cones) corners += adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)];
   stages.next("cone_map", fmt::format("the seamless map with {} corner and {} interior cones", corners,
@@ -134,9 +145,10 @@ Candidate cone_candidate(const FormSetup& setup, const QuadMeshOptions& options,
                          Stages& stages) {
   Candidate cones;
   std::string placement_failure;
+  std::vector<std::vector<Cone>> placed;
   for (const ConePlacementOptions& placement : cone_placements()) {
     try {
-      cones = cone_attempt(setup, placement, stages);
+      cones = cone_attempt(setup, placement, stages, placed);
     } catch (const Error& e) {
       if (placement_failure.empty()) placement_failure = e.what();
       continue;

@@ -22,13 +22,16 @@ constexpr double size_band_goal = 0.9;
 /// Meshes `setup.soup` by the cone route at the requested quad edge: the result
 /// (the preamble's fields, surface, quads, boundary loops of the points, cones,
 /// extraction) measured once.
-/// Throws qm::Error when a stage cannot be done (handles whose holonomy the
-/// cones leave, a boundary loop the field cannot meet, a failed solve).
-Candidate cone_attempt(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages);
+/// Throws qm::Error when a stage cannot be done (a boundary loop the field cannot
+/// meet, a failed solve), or when the cones placed are a set in `placed` (tried
+/// before); else adds them there.
+Candidate cone_attempt(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages,
+                       std::vector<std::vector<Cone>>& placed);
 
 /// The cone placements the route tries in turn, until one gives sound quads: the
-/// defaults, then interior cones farther from the boundary and from each other
-/// (cramped cones fold the map between them and the boundary).
+/// defaults, then without the valence-3/5 pairs that even the sizes (more cones,
+/// more places to fold), then interior cones farther from the boundary and from
+/// each other (cramped cones fold the map between them and the boundary).
 std::vector<ConePlacementOptions> cone_placements();
 
 /// Sound: quads with the input's topology, no inverted or flipped quad, no dropped
