@@ -1,5 +1,6 @@
 #include "libquadmesh/cones/cross_field.h"
 
+#include "libquadmesh/cones/cone_map.h"
 #include "libquadmesh/cones/cone_metric.h"
 #include "libquadmesh/cones/cone_set.h"
 #include "libquadmesh/cones/handle_alignment.h"
@@ -186,16 +187,16 @@ ExtraTurn side_form_turn(const SideForm& form) {
   };
 }
 
-/// The coefficient of each handle form that makes the field, as propagated with
-/// `extra`, close around every handle. Across an inner edge the tree does not
+/// The coefficient of each handle form that makes the field, as propagated with no
+/// extra turn, close around every handle. Across an inner edge the tree does not
 /// cross, the field jumps by J (the holonomy of the edge's loop through the tree);
 /// adding sum_k c_k form_k lowers J by sum_k c_k P_k, P_k the form's period along
 /// that loop (an intersection number). The loops whose periods are independent
 /// (fewest crossings first) give the square system sum_k c_k P_k = remainder(J).
 std::vector<double> handle_coefficients(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                                         const LocalFrames& frames, const Eigen::VectorXd& u, int seed,
-                                        const ExtraTurn& extra, const std::vector<SideForm>& forms,
-                                        const CrossField& field) {
+                                        const std::vector<SideForm>& forms, const CrossField& field) {
+  const ExtraTurn none = [](std::size_t, const EdgeCorner&) { return 0.0; };
   const std::size_t m = forms.size();
   std::vector<std::vector<double>> integral;
   for (const SideForm& form : forms) integral.push_back(tree_integral(soup, adjacency, field, seed, side_form_turn(form)));
@@ -218,7 +219,7 @@ std::vector<double> handle_coefficients(const TriangleSoup& soup, const SurfaceA
       }
       if (loop.crossings == 0) continue;
       const double jump = field.angle[static_cast<std::size_t>(g.face)] -
-                          transported(soup, frames, u, f, k, g, field.angle[f], extra);
+                          transported(soup, frames, u, f, k, g, field.angle[f], none);
       loop.remainder = quarter_turn_remainder(jump);
       loops.push_back(std::move(loop));
     }
@@ -300,11 +301,13 @@ CrossField cone_cross_field(const TriangleSoup& soup, const SurfaceAdjacency& ad
   const ExtraTurn none = [](std::size_t, const EdgeCorner&) { return 0.0; };
   propagate(soup, adjacency, frames, u, seed, seed_angle, none, field);
   // the handles first (their forms keep every boundary loop where it is)
-  const std::vector<SideForm> handles = handle_forms(soup, adjacency);
+  // (none on a genus-0 surface: chi = 2 - 2g - loops)
+  const bool has_handles = 2 - euler_characteristic(adjacency) - static_cast<int>(adjacency.boundary_loops.size()) > 0;
+  const std::vector<SideForm> handles = has_handles ? handle_forms(soup, adjacency) : std::vector<SideForm>{};
   SideForm handle_turn;
   ExtraTurn base = none;
   if (!handles.empty()) {
-    field.handle_rotation = handle_coefficients(soup, adjacency, frames, u, seed, none, handles, field);
+    field.handle_rotation = handle_coefficients(soup, adjacency, frames, u, seed, handles, field);
     handle_turn = combined_form(handles, field.handle_rotation);
     base = side_form_turn(handle_turn);
     propagate(soup, adjacency, frames, u, seed, seed_angle, base, field);
