@@ -74,6 +74,11 @@ struct QuadMeshOptions {
   /// Where triangles wider than the quads cover 5% of the area, also mesh the input
   /// split by longest-edge bisection and keep the better result (forms/long_edges.h).
   bool split_long_edges = true;
+  /// Where the input's triangles are far finer than the quads need (mean edge under
+  /// a sixth of the quad size, no CAD curves), mesh a working triangulation with
+  /// edges of about a third of the quad size, made of the input's own points by
+  /// edge collapses (forms/coarsen.h). The quads lie on it; it is inscribed in S.
+  bool coarsen = true;
   /// What a sound, well-shaped result is: the attempts are ranked by it
   /// (pipeline/internal/candidate_ranking.h), and a coarser base lattice bought for
   /// the size adaptivity must keep its Jacobian floor.
@@ -119,6 +124,9 @@ struct QuadMeshResult {
   /// when > 0 the input as it is was meshed too, and the better result kept.
   std::size_t long_edges_split = 0;
   bool long_edges_kept = false;  ///< the result is the split input's
+  /// The input's triangle count when a coarser working triangulation was meshed
+  /// (QuadMeshOptions::coarsen; `surface` is then that triangulation); 0: not coarsened.
+  std::size_t coarsened_from = 0;
 
   // the singularities (Singularities::automatic)
   std::string singularities = "abel";  ///< the route of the quads: "abel" or "cones"

@@ -271,6 +271,7 @@ QuadMeshOptions quad_mesh_options(const MeshOptions& options) {
   mesher.rotate = options.rotate;
   mesher.singularities = options.singularities == "auto" ? Singularities::automatic : Singularities::abel;
   mesher.smoothing = !options.no_smoothing;
+  mesher.coarsen = !options.no_coarsening;
   mesher.size = options.size;
   mesher.size_relative = options.size_relative;
   mesher.quads = options.quads;

@@ -36,6 +36,7 @@ struct MeshOptions {
   bool rotate = false;
   std::string singularities = "abel";  ///< abel | auto (QuadMeshOptions::singularities)
   bool no_smoothing = false;            ///< --no-smoothing
+  bool no_coarsening = false;           ///< --no-coarsening
   double corner_angle_deg = 30.0;
   double tip_angle_deg = 315.0;
   double max_deviation = 0.0;           ///< --max-deviation D; 0: half the size; < 0: off

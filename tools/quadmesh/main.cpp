@@ -172,6 +172,9 @@ int run(int argc, char** argv) {
                    "[0.5, 2] x the size")
       ->check(CLI::IsMember({"abel", "auto"}))
       ->capture_default_str();
+  mesh_cmd->add_flag("--no-coarsening", mesh.no_coarsening,
+                     "Mesh the input's own triangles even where they are far finer than the quads need "
+                     "(by default a working triangulation of the input's points, edges a third of the size)");
   mesh_cmd->add_flag("--no-smoothing", mesh.no_smoothing,
                      "Keep every quad corner where the extraction put it (no smoothing of the worst quads "
                      "or of the angles)");

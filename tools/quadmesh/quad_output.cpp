@@ -256,6 +256,8 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
   j["fitting"] = {{"moved_points", result.fitting.moved_points},
                   {"deviation_before", result.fitting.deviation_before},
                   {"deviation_after", result.fitting.deviation_after}};
+  j["coarsened_from_triangles"] = result.coarsened_from;
+  j["surface_triangles"] = result.surface.triangles.size();
   j["long_edges"] = {{"split", result.long_edges_split},
                      {"kept", result.long_edges_split == 0 ? "none split" : result.long_edges_kept ? "split" : "input"}};
   j["refinement"] = {{"enabled", result.max_deviation > 0},
@@ -312,6 +314,9 @@ void print_summary(const MeshSummary& s) {
                sg["max_rounding"].get<double>());
   else
     fmt::print("quantization        distortion {:.3g}\n", s.report["quantization"]["distortion"].get<double>());
+  if (const auto from = s.report.value("coarsened_from_triangles", std::size_t{0}); from > 0)
+    fmt::print("working surface     {} triangles of the input's points (the input has {}; --no-coarsening)\n",
+               s.report.value("surface_triangles", std::size_t{0}), from);
   const Json& rf = s.report["refinement"];
   if (rf["enabled"].get<bool>())
     fmt::print("refinement          {} chords split (+{} quads, base lattice {:.0f}% of the target), deviation "
