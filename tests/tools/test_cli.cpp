@@ -557,3 +557,37 @@ TEST_CASE("mesh --singularities auto: a T-plate the Abel route folds meshes with
   CHECK(q["hausdorff_rel"].get<double>() <= 0.01);
   CHECK(q["size_band_share"].get<double>() >= 0.85);
 }
+
+TEST_CASE("mesh: an input far finer than the quads is meshed on a working triangulation, measured against the input") {
+  const std::string dir = test::scratch_dir("cli_coarsen");
+  const TriangleSoup fine = test::annulus(1.0, 2.0, 50, 300);  // 30000 triangles, edges 0.02 to 0.04
+  const std::string input = dir + "/annulus.obj";
+  test::write_obj(fine, input);
+  auto mesh = [&](const std::string& more) {
+    const std::string output = dir + "/out.msh", report = dir + "/report.json";
+    const Run run = quadmesh("mesh " + quoted(input) + " -o " + quoted(output) + " --size 0.25 -q --report " +
+                             quoted(report) + more);
+    CHECK(run.status == 0);
+    REQUIRE(std::filesystem::exists(report));
+    return nlohmann::json::parse(slurp(report));
+  };
+  const nlohmann::json coarse = mesh("");
+  CHECK(coarse["coarsened_from_triangles"] == 30000);
+  CHECK(coarse["surface_triangles"].get<std::size_t>() * 4 < 30000);
+  const nlohmann::json& q = coarse["quality"];
+  CHECK(q["triangles"] == 0);
+  CHECK(q["inverted"] == 0);
+  CHECK(q["euler_characteristic"] == 0);
+  CHECK(q["boundary_loops"] == 2);
+  CHECK(q["min_scaled_jacobian"].get<double>() > 0.9);  // an annulus: a polar grid
+  // against the input as read: the inscribed polygons are within the chords' sagitta
+  CHECK(q["hausdorff_rel"].get<double>() < 0.005);
+  const nlohmann::json as_is = mesh(" --no-coarsening");
+  CHECK(as_is["coarsened_from_triangles"] == 0);
+  CHECK(as_is["surface_triangles"].get<std::size_t>() >= 30000);
+  CHECK(as_is["quality"]["quads"].get<double>() == doctest::Approx(q["quads"].get<double>()).epsilon(0.1));
+  // 8-node quads: the edge nodes go onto the input (here the plane), not only the working surface
+  const nlohmann::json quadratic = mesh(" --order 2");
+  CHECK(quadratic["order"]["nodes_per_quad"] == 8);
+  CHECK(quadratic["coarsened_from_triangles"] == 30000);
+}

@@ -313,7 +313,8 @@ int run_mesh(const MeshOptions& options, const CommonOptions& common) {
   if (options.order == 2) {
     progress.stage(fmt::format("placing the nodes of the {}-node quads on the surface", nodes_per_quad(options)));
     quadratic = quadratic_output(result, options.complete,
-                                 io::is_cad(io::format_of(options.input)) ? options.input : std::string());
+                                 io::is_cad(io::format_of(options.input)) ? options.input : std::string(),
+                                 in.surface.soup);
   }
   progress.stage("measuring quality");
   const MeshSummary summary = summarize(in, result, options, progress.elapsed(), quadratic ? &*quadratic : nullptr);

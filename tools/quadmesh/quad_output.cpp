@@ -43,10 +43,13 @@ CurveLookup curve_lookup(const CadCurves& cad) {
   return out;
 }
 
-QuadraticQuads quadratic_output(const QuadMeshResult& result, bool complete, const std::string& cad_path) {
+QuadraticQuads quadratic_output(const QuadMeshResult& result, bool complete, const std::string& cad_path,
+                                const TriangleSoup& input) {
   QuadraticQuadsOptions options;
   options.complete = complete;
-  QuadraticQuads out = quadratic_quads(result.quads.points, result.quads.quads, result.surface, options);
+  // on a working triangulation (coarsened: inscribed in the input) the nodes go onto the input itself
+  const TriangleSoup& surface = result.coarsened_from > 0 ? input : result.surface;
+  QuadraticQuads out = quadratic_quads(result.quads.points, result.quads.quads, surface, options);
   if (cad_path.empty() || result.surface.cad.edges.empty()) return out;
   const CurveLookup curves = curve_lookup(result.surface.cad);
   std::vector<io::CurvePointQuery> queries;

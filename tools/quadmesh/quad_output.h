@@ -50,7 +50,11 @@ io::OutputMesh output_mesh(const QuadMeshResult& result, const QuadraticQuads* q
 /// (`cad_path` not empty) every boundary node moved onto its CAD curve (io/
 /// cad_curve_points.h): an edge node onto the curve both ends of its edge lie on, a
 /// corner on one curve onto it (from the triangulation's chord, by its sagitta).
-QuadraticQuads quadratic_output(const QuadMeshResult& result, bool complete, const std::string& cad_path);
+/// `input`: the surface as read; the nodes go onto it when the quads were meshed
+/// on a coarser working triangulation (QuadMeshResult::coarsened_from), else onto
+/// result.surface.
+QuadraticQuads quadratic_output(const QuadMeshResult& result, bool complete, const std::string& cad_path,
+                                const TriangleSoup& input);
 
 MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, const MeshOptions& options,
                       double seconds, const QuadraticQuads* quadratic = nullptr);
