@@ -4,6 +4,7 @@
 #include "libquadmesh/core/error.h"
 
 #include <Eigen/CholmodSupport>
+#include <Eigen/Dense>
 #include <Eigen/Sparse>
 
 #include <algorithm>
@@ -29,6 +30,10 @@ constexpr double stiffening_factor = 2.0;
 constexpr double max_stiffness = 1e3;
 /// A value this close to an integer after a solve is taken as integer.
 constexpr double integer_tolerance = 1e-6;
+/// The rounding's solves between two factorizations: each value made integer adds
+/// a diagonal penalty, a rank-one change, solved by the Woodbury identity on the
+/// last factorization (one back-substitution per value) until this many.
+constexpr int max_low_rank = 64;
 
 /// A real linear constraint sum coefficient * variable = rhs.
 struct Row {
@@ -178,6 +183,7 @@ class PenaltySolver {
     base_.setFromTriplets(energy.begin(), energy.end());
   }
 
+  /// The minimizer with every value fixed so far: a factorization of the whole system.
   Eigen::VectorXd solve() {
     SparseMatrix H = base_;
     Eigen::VectorXd b = base_rhs_;
@@ -195,6 +201,39 @@ class PenaltySolver {
     Eigen::VectorXd z = solver_.solve(b);
     if (solver_.info() != Eigen::Success || !z.allFinite())
       throw Error(ErrorCode::solver, "the seamless map's solve failed");
+    factored_ = fixed_.size();
+    factored_solution_ = z;
+    columns_ = 0;
+    return z;
+  }
+
+  /// The same minimizer after more values were fixed, from the last factorization
+  /// (H0, its solution x0): with U the fixed values' unit vectors since then, Y =
+  /// H0^-1 U and M = I / w + U^T Y, the penalized system's solution is x0 + Y
+  /// M^-1 (values - U^T x0) (Woodbury; the same as solve() up to round-off). A new
+  /// factorization past max_low_rank of them.
+  Eigen::VectorXd solve_low_rank() {
+    const std::size_t k = fixed_.size() - factored_;
+    if (k == 0) return factored_solution_;
+    if (k > static_cast<std::size_t>(max_low_rank)) return solve();
+    if (Y_.rows() != n_) Y_.resize(n_, max_low_rank);
+    for (; columns_ < k; ++columns_) {
+      Eigen::VectorXd e = Eigen::VectorXd::Zero(n_);
+      e[fixed_[factored_ + columns_].first] = 1;
+      Y_.col(static_cast<Eigen::Index>(columns_)) = solver_.solve(e);
+      if (solver_.info() != Eigen::Success) throw Error(ErrorCode::solver, "the seamless map's solve failed");
+    }
+    const auto K = static_cast<Eigen::Index>(k);
+    Eigen::MatrixXd M = Eigen::MatrixXd::Identity(K, K) / penalty_weight;
+    Eigen::VectorXd gap(K);
+    for (Eigen::Index i = 0; i < K; ++i) {
+      const auto& [v, value] = fixed_[factored_ + static_cast<std::size_t>(i)];
+      for (Eigen::Index j = 0; j < K; ++j) M(i, j) += Y_(v, j);
+      gap[i] = value - factored_solution_[v];
+    }
+    const Eigen::VectorXd c = M.partialPivLu().solve(gap);
+    Eigen::VectorXd z = factored_solution_ + Y_.leftCols(K) * c;
+    if (!z.allFinite()) return solve();
     return z;
   }
 
@@ -217,6 +256,10 @@ class PenaltySolver {
   Eigen::VectorXd base_rhs_;
   Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> solver_;
   bool analysed_ = false;
+  std::size_t factored_ = 0;          ///< fixed_[0, factored_) are in the factorization
+  Eigen::VectorXd factored_solution_;  ///< its solution
+  Eigen::MatrixXd Y_;                 ///< H0^-1 e_v of the values fixed since (columns_ of them)
+  std::size_t columns_ = 0;
 };
 
 /// Greedy rounding, phase by phase: fix every candidate already integer and the
@@ -256,7 +299,7 @@ Eigen::VectorXd quantize(PenaltySolver& solver, const std::vector<std::vector<in
         ++report.integer_values;
         report.max_rounding = std::max(report.max_rounding, std::abs(z[v] - std::round(z[v])));
       }
-      z = solver.solve();
+      z = solver.solve_low_rank();
       ++report.solves;
     }
   return z;
