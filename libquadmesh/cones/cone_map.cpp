@@ -8,16 +8,6 @@
 
 namespace qm {
 
-int euler_characteristic(const SurfaceAdjacency& adjacency) {
-  const TriangleSoup& soup = *adjacency.soup;
-  std::size_t boundary_edges = 0;
-  for (const auto& loop : adjacency.boundary_loops) boundary_edges += loop.size();
-  const std::size_t edges = (3 * soup.triangles.size() + boundary_edges) / 2;
-  std::size_t vertices = 0;
-  for (const auto& faces : adjacency.vertex_faces) vertices += faces.empty() ? 0 : 1;
-  return static_cast<int>(vertices) - static_cast<int>(edges) + static_cast<int>(soup.triangles.size());
-}
-
 namespace {
 
 /// The mean of u over the neighbours of v.

@@ -26,7 +26,4 @@ struct ConeMap {
 ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const std::vector<Cone>& cones,
                  double size);
 
-/// V - E + F of the soup described by `adjacency`.
-int euler_characteristic(const SurfaceAdjacency& adjacency);
-
 }  // namespace qm

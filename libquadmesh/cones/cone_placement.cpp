@@ -265,6 +265,12 @@ MetricBand metric_band(const Eigen::VectorXd& u, const std::vector<double>& area
 /// protrusion tips and the ends of arms get the valence-3 cones). Each pair is
 /// weighed after `settle` has moved the cones (loops aligned, sizes evened), and
 /// kept only when the band improves; at most `room` cones are added.
+/// Sets marks[v] = value for every point v nearer than `radius` to `at`.
+void mark_within(const std::vector<Vec3>& points, const Vec3& at, double radius, char value, std::vector<char>& marks) {
+  for (std::size_t v = 0; v < points.size(); ++v)
+    if ((points[v] - at).squaredNorm() < radius * radius) marks[v] = value;
+}
+
 template <class Settle>
 void add_cone_pairs(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const ConeMetricSolver& solver,
                     const std::vector<double>& curvature, const std::vector<double>& area,
@@ -279,12 +285,9 @@ void add_cone_pairs(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
   // a vertex may take a cone when eligible and `spacing` from every interior cone
   auto free_vertices = [&](const std::vector<Cone>& set) {
     std::vector<char> free = eligible;
-    for (const Cone& c : set) {
-      if (adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)]) continue;
-      const Vec3& at = soup.points[static_cast<std::size_t>(c.vertex)];
-      for (std::size_t v = 0; v < free.size(); ++v)
-        if ((soup.points[v] - at).squaredNorm() < spacing * spacing) free[v] = 0;
-    }
+    for (const Cone& c : set)
+      if (!adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)])
+        mark_within(soup.points, soup.points[static_cast<std::size_t>(c.vertex)], spacing, 0, free);
     return free;
   };
   Eigen::VectorXd u;
@@ -382,11 +385,6 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
   // vertices nearer than cone_spacing quads to a placed interior cone are taken
   // too: two cones closer than that compete for the same lattice cells
   const double spacing = options.cone_spacing * size;
-  const auto take_around = [&](int cone) {
-    const Vec3& at = soup.points[static_cast<std::size_t>(cone)];
-    for (std::size_t v = 0; v < soup.points.size(); ++v)
-      if ((soup.points[v] - at).squaredNorm() < spacing * spacing) taken[v] = 1;
-  };
   const bool several_loops = adjacency.boundary_loops.size() > 1;
   const LoopTurns model = several_loops ? loop_turns(soup, adjacency, solver) : LoopTurns{};
   while (deficit != 0) {
@@ -426,7 +424,7 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
     }
     cones.push_back({best, 4 - step});
     taken[static_cast<std::size_t>(best)] = 1;
-    take_around(best);
+    mark_within(soup.points, soup.points[static_cast<std::size_t>(best)], spacing, 1, taken);
     deficit -= step;
   }
   // the cones moved to align the loops, then to even the quad sizes

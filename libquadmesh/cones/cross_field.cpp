@@ -70,12 +70,22 @@ double transported(const TriangleSoup& soup, const LocalFrames& frames, const Ei
   return angle - in_f + in_g + turn + extra(f, g);
 }
 
+/// The breadth-first tree propagate() walks (the same for every extra turn):
+/// the triangles in the order reached, and per triangle the one it was reached
+/// from with that one's side (-1, -1 for the seed).
+struct FieldTree {
+  std::vector<int> order;
+  std::vector<std::pair<int, int>> parent;
+};
+
 /// Angles along a breadth-first tree of the triangles from `seed` (at
-/// `seed_angle`); marks the tree's sides.
-void propagate(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const LocalFrames& frames,
-               const Eigen::VectorXd& u, int seed, double seed_angle, const ExtraTurn& extra, CrossField& field,
-               std::vector<std::pair<int, int>>* parent = nullptr) {
+/// `seed_angle`); marks the tree's sides and returns the tree.
+FieldTree propagate(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const LocalFrames& frames,
+                    const Eigen::VectorXd& u, int seed, double seed_angle, const ExtraTurn& extra, CrossField& field) {
   const std::size_t nF = soup.triangles.size();
+  FieldTree tree;
+  tree.parent.assign(nF, {-1, -1});
+  tree.order.push_back(seed);
   field.angle.assign(nF, 0.0);
   field.tree_side.assign(nF, {0, 0, 0});
   field.angle[static_cast<std::size_t>(seed)] = seed_angle;
@@ -95,10 +105,12 @@ void propagate(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, cons
       field.angle[gf] = transported(soup, frames, u, f, k, g, field.angle[f], extra);
       field.tree_side[f][static_cast<std::size_t>(k)] = 1;
       field.tree_side[gf][static_cast<std::size_t>(g.i)] = 1;  // g's side from b (corner g.i) to a
-      if (parent) (*parent)[gf] = {static_cast<int>(f), k};
+      tree.parent[gf] = {static_cast<int>(f), k};
+      tree.order.push_back(g.face);
       queue.push(g.face);
     }
   }
+  return tree;
 }
 
 /// Quarter turns across inner sides, axes of boundary sides, misalignments; and
@@ -156,26 +168,16 @@ LocalFrames local_frames(const TriangleSoup& soup) {
   return frames;
 }
 
-/// Per triangle, the sum of `turn` along the field's tree from `seed`.
-std::vector<double> tree_integral(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const CrossField& field,
-                                  int seed, const ExtraTurn& turn) {
+/// Per triangle, the sum of `turn` along the field's tree from its seed.
+std::vector<double> tree_integral(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const FieldTree& tree,
+                                  const ExtraTurn& turn) {
   std::vector<double> sum(soup.triangles.size(), 0.0);
-  std::vector<char> reached(soup.triangles.size(), 0);
-  reached[static_cast<std::size_t>(seed)] = 1;
-  std::queue<int> queue;
-  queue.push(seed);
-  while (!queue.empty()) {
-    const auto f = static_cast<std::size_t>(queue.front());
-    queue.pop();
-    const Triangle& t = soup.triangles[f];
-    for (int k = 0; k < 3; ++k) {
-      if (!field.tree_side[f][static_cast<std::size_t>(k)]) continue;
-      const EdgeCorner g = adjacency.find(t[(k + 1) % 3], t[k]);
-      if (g.face < 0 || reached[static_cast<std::size_t>(g.face)]) continue;
-      reached[static_cast<std::size_t>(g.face)] = 1;
-      sum[static_cast<std::size_t>(g.face)] = sum[f] + turn(f, g);
-      queue.push(g.face);
-    }
+  for (int f : tree.order) {
+    const auto [p, k] = tree.parent[static_cast<std::size_t>(f)];
+    if (p < 0) continue;  // the seed
+    const Triangle& t = soup.triangles[static_cast<std::size_t>(p)];
+    sum[static_cast<std::size_t>(f)] =
+        sum[static_cast<std::size_t>(p)] + turn(static_cast<std::size_t>(p), adjacency.find(t[(k + 1) % 3], t[k]));
   }
   return sum;
 }
@@ -194,12 +196,12 @@ ExtraTurn side_form_turn(const SideForm& form) {
 /// that loop (an intersection number). The loops whose periods are independent
 /// (fewest crossings first) give the square system sum_k c_k P_k = remainder(J).
 std::vector<double> handle_coefficients(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
-                                        const LocalFrames& frames, const Eigen::VectorXd& u, int seed,
+                                        const LocalFrames& frames, const Eigen::VectorXd& u, const FieldTree& tree,
                                         const std::vector<SideForm>& forms, const CrossField& field) {
   const ExtraTurn none = [](std::size_t, const EdgeCorner&) { return 0.0; };
   const std::size_t m = forms.size();
   std::vector<std::vector<double>> integral;
-  for (const SideForm& form : forms) integral.push_back(tree_integral(soup, adjacency, field, seed, side_form_turn(form)));
+  for (const SideForm& form : forms) integral.push_back(tree_integral(soup, adjacency, tree, side_form_turn(form)));
   struct Loop {
     Eigen::VectorXd period;
     double remainder = 0;
@@ -264,9 +266,10 @@ LoopTurns loop_turns(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(soup.points.size()));
   const ExtraTurn none = [](std::size_t, const EdgeCorner&) { return 0.0; };
   CrossField field;
-  std::vector<std::pair<int, int>> parent(soup.triangles.size(), {-1, -1});
-  propagate(soup, adjacency, frames, zero, seed, side_angle(frames.corners[static_cast<std::size_t>(seed)], seed_side),
-            none, field, &parent);
+  const std::vector<std::pair<int, int>> parent =
+      propagate(soup, adjacency, frames, zero, seed,
+                side_angle(frames.corners[static_cast<std::size_t>(seed)], seed_side), none, field)
+          .parent;
   std::vector<std::pair<int, double>> first_side(adjacency.boundary_loops.size(), {-1, 0.0});
   classify_sides(soup, adjacency, frames, zero, none, field, &first_side);
   LoopTurns turns;
@@ -299,7 +302,7 @@ CrossField cone_cross_field(const TriangleSoup& soup, const SurfaceAdjacency& ad
   const double seed_angle = seed_side >= 0 ? side_angle(frames.corners[static_cast<std::size_t>(seed)], seed_side) : 0.0;
   CrossField field;
   const ExtraTurn none = [](std::size_t, const EdgeCorner&) { return 0.0; };
-  propagate(soup, adjacency, frames, u, seed, seed_angle, none, field);
+  const FieldTree tree = propagate(soup, adjacency, frames, u, seed, seed_angle, none, field);
   // the handles first (their forms keep every boundary loop where it is)
   // (none on a genus-0 surface: chi = 2 - 2g - loops)
   const bool has_handles = 2 - euler_characteristic(adjacency) - static_cast<int>(adjacency.boundary_loops.size()) > 0;
@@ -307,7 +310,7 @@ CrossField cone_cross_field(const TriangleSoup& soup, const SurfaceAdjacency& ad
   SideForm handle_turn;
   ExtraTurn base = none;
   if (!handles.empty()) {
-    field.handle_rotation = handle_coefficients(soup, adjacency, frames, u, seed, handles, field);
+    field.handle_rotation = handle_coefficients(soup, adjacency, frames, u, tree, handles, field);
     handle_turn = combined_form(handles, field.handle_rotation);
     base = side_form_turn(handle_turn);
     propagate(soup, adjacency, frames, u, seed, seed_angle, base, field);

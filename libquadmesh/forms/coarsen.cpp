@@ -206,14 +206,9 @@ class Collapser {
 };
 
 /// chi and the number of boundary loops of an oriented manifold soup.
-std::pair<long, std::size_t> topology(const TriangleSoup& soup) {
+std::pair<int, std::size_t> topology(const TriangleSoup& soup) {
   const SurfaceAdjacency adjacency = surface_adjacency(soup);
-  std::size_t used = 0, boundary_edges = 0;
-  for (std::size_t v = 0; v < soup.points.size(); ++v) used += adjacency.vertex_faces[v].empty() ? 0 : 1;
-  for (const auto& loop : adjacency.boundary_loops) boundary_edges += loop.size();
-  const std::size_t edges = (3 * soup.triangles.size() + boundary_edges) / 2;
-  return {static_cast<long>(used) - static_cast<long>(edges) + static_cast<long>(soup.triangles.size()),
-          adjacency.boundary_loops.size()};
+  return {euler_characteristic(adjacency), adjacency.boundary_loops.size()};
 }
 
 }  // namespace

@@ -42,6 +42,10 @@ struct SurfaceAdjacency {
 /// Precondition: an oriented, edge- and vertex-manifold soup.
 SurfaceAdjacency surface_adjacency(const TriangleSoup& soup);
 
+/// V - E + F of the soup described by `adjacency` (the points no triangle uses
+/// left out).
+int euler_characteristic(const SurfaceAdjacency& adjacency);
+
 /// The neighbours of v in counter-clockwise order (for a boundary vertex, from the
 /// boundary neighbour that follows v on its loop... to the one that precedes it),
 /// with the face between neighbour k and k + 1.
