@@ -258,6 +258,12 @@ MetricBand metric_band(const Eigen::VectorXd& u, const std::vector<double>& area
   return band;
 }
 
+/// Sets marks[v] = value for every point v nearer than `radius` to `at`.
+void mark_within(const std::vector<Vec3>& points, const Vec3& at, double radius, char value, std::vector<char>& marks) {
+  for (std::size_t v = 0; v < points.size(); ++v)
+    if ((points[v] - at).squaredNorm() < radius * radius) marks[v] = value;
+}
+
 /// Valence-5 and valence-3 cones in pairs (Gauss-Bonnet kept), at the highest and
 /// the lowest u among the vertices that may take a cone, while the metric's quad
 /// size leaves the band: less than options.pair_band_goal of the area within
@@ -265,12 +271,6 @@ MetricBand metric_band(const Eigen::VectorXd& u, const std::vector<double>& area
 /// protrusion tips and the ends of arms get the valence-3 cones). Each pair is
 /// weighed after `settle` has moved the cones (loops aligned, sizes evened), and
 /// kept only when the band improves; at most `room` cones are added.
-/// Sets marks[v] = value for every point v nearer than `radius` to `at`.
-void mark_within(const std::vector<Vec3>& points, const Vec3& at, double radius, char value, std::vector<char>& marks) {
-  for (std::size_t v = 0; v < points.size(); ++v)
-    if ((points[v] - at).squaredNorm() < radius * radius) marks[v] = value;
-}
-
 template <class Settle>
 void add_cone_pairs(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const ConeMetricSolver& solver,
                     const std::vector<double>& curvature, const std::vector<double>& area,

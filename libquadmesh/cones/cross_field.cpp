@@ -1,12 +1,12 @@
 #include "libquadmesh/cones/cross_field.h"
 
-#include "libquadmesh/cones/cone_map.h"
 #include "libquadmesh/cones/cone_metric.h"
 #include "libquadmesh/cones/cone_set.h"
 #include "libquadmesh/cones/handle_alignment.h"
 #include "libquadmesh/cones/internal/face_geometry.h"
 #include "libquadmesh/cones/loop_alignment.h"
 #include "libquadmesh/core/error.h"
+#include "libquadmesh/param/internal/surface_adjacency.h"
 
 #include <Eigen/QR>
 

@@ -1,13 +1,13 @@
 #include "libquadmesh/cones/handle_alignment.h"
 
 #include "libquadmesh/core/error.h"
+#include "libquadmesh/core/internal/union_find.h"
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/Sparse>
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <queue>
 
 namespace qm {
@@ -61,35 +61,18 @@ VertexTree inner_vertex_tree(const SurfaceAdjacency& adjacency, const std::vecto
   return tree;
 }
 
-/// Union-find over the triangles and one node per boundary loop (the caps).
-struct Components {
-  std::vector<int> up;
-  explicit Components(std::size_t n) : up(n) { std::iota(up.begin(), up.end(), 0); }
-  int root(int x) {
-    while (up[static_cast<std::size_t>(x)] != x) x = up[static_cast<std::size_t>(x)] = up[static_cast<std::size_t>(up[static_cast<std::size_t>(x)])];
-    return x;
-  }
-  bool join(int a, int b) {
-    a = root(a);
-    b = root(b);
-    if (a == b) return false;
-    up[static_cast<std::size_t>(a)] = b;
-    return true;
-  }
-};
-
 /// The inner edges (a, b), a < b, in neither the vertex tree nor the cotree of the
 /// capped surface: one per handle generator.
 std::vector<std::pair<int, int>> generator_edges(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                                                  const VertexTree& tree) {
   const std::size_t nF = soup.triangles.size();
-  Components cotree(nF + adjacency.boundary_loops.size());
+  UnionFind cotree(nF + adjacency.boundary_loops.size());  // the triangles and one cap per boundary loop
   // the caps first, so that the cotree takes the boundary edges it can
   for (std::size_t f = 0; f < nF; ++f)
     for (int k = 0; k < 3; ++k) {
       const Triangle& t = soup.triangles[f];
       if (adjacency.find(t[(k + 1) % 3], t[k]).face >= 0) continue;
-      cotree.join(static_cast<int>(f),
+      cotree.unite(static_cast<int>(f),
                   static_cast<int>(nF) + adjacency.loop_of_vertex[static_cast<std::size_t>(t[k])]);
     }
   std::vector<std::pair<int, int>> generators;
@@ -101,7 +84,7 @@ std::vector<std::pair<int, int>> generator_edges(const TriangleSoup& soup, const
       if (g.face < static_cast<int>(f)) continue;  // boundary side, or the twin's turn
       if (tree.holds(a, b)) continue;
       if (tree.depth[static_cast<std::size_t>(a)] < 0 || tree.depth[static_cast<std::size_t>(b)] < 0) continue;
-      if (!cotree.join(static_cast<int>(f), g.face)) generators.emplace_back(std::min(a, b), std::max(a, b));
+      if (!cotree.unite(static_cast<int>(f), g.face)) generators.emplace_back(std::min(a, b), std::max(a, b));
     }
   return generators;
 }
@@ -142,18 +125,20 @@ SideForm dual_form(const SurfaceAdjacency& adjacency, std::size_t triangles, con
 /// triangle graph with phi = 0 on the triangles with a boundary side.
 void harmonize(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, std::vector<SideForm>& forms) {
   const auto nF = static_cast<Eigen::Index>(soup.triangles.size());
-  std::vector<char> held(static_cast<std::size_t>(nF), 0);
-  for (Eigen::Index f = 0; f < nF; ++f)
-    for (int k = 0; k < 3; ++k) {
-      const Triangle& t = soup.triangles[static_cast<std::size_t>(f)];
-      held[static_cast<std::size_t>(f)] |= adjacency.find(t[(k + 1) % 3], t[k]).face < 0;
-    }
-  if (std::find(held.begin(), held.end(), 1) == held.end()) held[0] = 1;
-  std::vector<Eigen::Triplet<double>> entries;
+  // per triangle side, the triangle across it (-1: a boundary side); held: a boundary side
   std::vector<std::array<int, 3>> twin(static_cast<std::size_t>(nF), {-1, -1, -1});
+  std::vector<char> held(static_cast<std::size_t>(nF), 0);
   for (Eigen::Index f = 0; f < nF; ++f) {
     const Triangle& t = soup.triangles[static_cast<std::size_t>(f)];
-    for (int k = 0; k < 3; ++k) twin[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)] = adjacency.find(t[(k + 1) % 3], t[k]).face;
+    for (int k = 0; k < 3; ++k) {
+      const int g = adjacency.find(t[(k + 1) % 3], t[k]).face;
+      twin[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)] = g;
+      held[static_cast<std::size_t>(f)] |= g < 0;
+    }
+  }
+  if (std::find(held.begin(), held.end(), 1) == held.end()) held[0] = 1;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (Eigen::Index f = 0; f < nF; ++f) {
     if (held[static_cast<std::size_t>(f)]) {
       entries.emplace_back(f, f, 1.0);
       continue;

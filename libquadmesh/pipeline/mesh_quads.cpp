@@ -120,43 +120,6 @@ constexpr double coarsen_when_mean_edge_below = 0.25;
 constexpr double coarsen_kept_fraction = 0.5;
 
 QuadMeshResult mesh_quads_maybe_split(TriangleSoup soup, const QuadMeshOptions& options,
-                                      const ProgressCallback& progress);
-
-}  // namespace
-
-QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, const ProgressCallback& progress) {
-  if (surface_adjacency(soup).boundary_loops.empty())
-    throw Error(ErrorCode::unsupported,
-                "quad meshing of closed surfaces is not implemented yet (their forms are: see `quadmesh forms`)");
-  require_within_work_limit(soup, options);
-  const double quad_edge = requested_size(soup, options).edge;
-  const double working_edge = working_edge_fraction * quad_edge;
-  if (!options.coarsen || !soup.cad.edges.empty() ||
-      !(mean_edge_length(soup) < coarsen_when_mean_edge_below * quad_edge))
-    return mesh_quads_maybe_split(std::move(soup), options, progress);
-  const auto start = std::chrono::steady_clock::now();
-  if (progress) progress(fmt::format("coarsening the input's {} triangles to edges of {:.4g}", soup.triangles.size(),
-                                     working_edge));
-  CoarsenOptions coarsening;
-  coarsening.edge_length = working_edge;
-  TriangleSoup working = coarsen(soup, coarsening);
-  const std::size_t input_triangles = soup.triangles.size();
-  if (static_cast<double>(working.triangles.size()) > coarsen_kept_fraction * static_cast<double>(input_triangles))
-    return mesh_quads_maybe_split(std::move(soup), options, progress);
-  const double seconds = seconds_since(start);
-  if (progress)
-    progress(fmt::format("meshing a working triangulation of {} triangles (from {})", working.triangles.size(),
-                         input_triangles));
-  soup = TriangleSoup{};  // the input's memory back before the forms
-  QuadMeshResult result = mesh_quads_maybe_split(std::move(working), options, progress);
-  result.coarsened_from = input_triangles;
-  result.timings.insert(result.timings.begin(), {"coarsening", seconds});
-  return result;
-}
-
-namespace {
-
-QuadMeshResult mesh_quads_maybe_split(TriangleSoup soup, const QuadMeshOptions& options,
                                       const ProgressCallback& progress) {
   if (!long_edge_split_allowed(options)) return mesh_quads_on(std::move(soup), options, progress);
   // Triangles wider than the quads carry one linear map across several quads:
@@ -207,5 +170,35 @@ QuadMeshResult mesh_quads_maybe_split(TriangleSoup soup, const QuadMeshOptions& 
 }
 
 }  // namespace
+
+QuadMeshResult mesh_quads(TriangleSoup soup, const QuadMeshOptions& options, const ProgressCallback& progress) {
+  if (surface_adjacency(soup).boundary_loops.empty())
+    throw Error(ErrorCode::unsupported,
+                "quad meshing of closed surfaces is not implemented yet (their forms are: see `quadmesh forms`)");
+  require_within_work_limit(soup, options);
+  const double quad_edge = requested_size(soup, options).edge;
+  const double working_edge = working_edge_fraction * quad_edge;
+  if (!options.coarsen || !soup.cad.edges.empty() ||
+      !(mean_edge_length(soup) < coarsen_when_mean_edge_below * quad_edge))
+    return mesh_quads_maybe_split(std::move(soup), options, progress);
+  const auto start = std::chrono::steady_clock::now();
+  if (progress) progress(fmt::format("coarsening the input's {} triangles to edges of {:.4g}", soup.triangles.size(),
+                                     working_edge));
+  CoarsenOptions coarsening;
+  coarsening.edge_length = working_edge;
+  TriangleSoup working = coarsen(soup, coarsening);
+  const std::size_t input_triangles = soup.triangles.size();
+  if (static_cast<double>(working.triangles.size()) > coarsen_kept_fraction * static_cast<double>(input_triangles))
+    return mesh_quads_maybe_split(std::move(soup), options, progress);
+  const double seconds = seconds_since(start);
+  if (progress)
+    progress(fmt::format("meshing a working triangulation of {} triangles (from {})", working.triangles.size(),
+                         input_triangles));
+  soup = TriangleSoup{};  // the input's memory back before the forms
+  QuadMeshResult result = mesh_quads_maybe_split(std::move(working), options, progress);
+  result.coarsened_from = input_triangles;
+  result.timings.insert(result.timings.begin(), {"coarsening", seconds});
+  return result;
+}
 
 }  // namespace qm
