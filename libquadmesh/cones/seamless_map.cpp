@@ -1,5 +1,6 @@
 #include "libquadmesh/cones/seamless_map.h"
 
+#include "libquadmesh/cones/internal/boundary_segments.h"
 #include "libquadmesh/cones/internal/face_geometry.h"
 #include "libquadmesh/core/error.h"
 
@@ -34,6 +35,9 @@ constexpr double integer_tolerance = 1e-6;
 /// a diagonal penalty, a rank-one change, solved by the Woodbury identity on the
 /// last factorization (one back-substitution per value) until this many.
 constexpr int max_low_rank = 64;
+/// A rounding to other than the nearest integer is refused when it leaves a seam or
+/// a fixed value off by more than this (lattice units).
+constexpr double max_option_residual = 1e-4;
 
 /// A real linear constraint sum coefficient * variable = rhs.
 struct Row {
@@ -59,17 +63,27 @@ void add_transition(int wedge_g, int wedge_f, int q, int t_var, std::vector<Row>
   }
 }
 
-/// The fitting energy's matrix and right side (the cotan form of the Dirichlet
-/// energy of W - target on each triangle).
-void add_fitting_energy(const TriangleSoup& soup, const Eigen::VectorXd& u, const CrossField& field,
-                        const CutGraph& cut, double size, const std::vector<double>& stiffness, Triplets& H,
-                        Eigen::VectorXd& b) {
+/// Per triangle, the factor taking its local frame to the map's target: the metric's
+/// scale e^u / size, turned into the field's frame.
+std::vector<Complex> target_scales(const TriangleSoup& soup, const Eigen::VectorXd& u, const CrossField& field,
+                                   double size) {
+  std::vector<Complex> scale(soup.triangles.size());
   for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
     const Triangle& t = soup.triangles[f];
+    const double uf = (u[t[0]] + u[t[1]] + u[t[2]]) / 3.0;
+    scale[f] = std::polar(std::exp(uf) / size, -field.angle[f]);
+  }
+  return scale;
+}
+
+/// The fitting energy's matrix and right side (the cotan form of the Dirichlet
+/// energy of W - target on each triangle).
+void add_fitting_energy(const TriangleSoup& soup, const std::vector<Complex>& scales, const CutGraph& cut,
+                        const std::vector<double>& stiffness, Triplets& H, Eigen::VectorXd& b) {
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
     const CornerValues x = local_corners(soup, f);
     const auto cot = corner_cotangents(soup, f);
-    const double uf = (u[t[0]] + u[t[1]] + u[t[2]]) / 3.0;
-    const Complex scale = std::polar(std::exp(uf) / size, -field.angle[f]);
+    const Complex scale = scales[f];
     for (int k = 0; k < 3; ++k) {
       const auto i = static_cast<std::size_t>((k + 1) % 3), j = static_cast<std::size_t>((k + 2) % 3);
       const double w = 0.5 * stiffness[f] * cot[static_cast<std::size_t>(k)];
@@ -171,6 +185,13 @@ class PenaltySolver {
 
   void fix(int variable, double value) { fixed_.push_back({variable, value}); }
 
+  /// Takes the last `count` fixes back (a rounding tried and refused).
+  void unfix(std::size_t count) {
+    fixed_.resize(fixed_.size() - count);
+    if (fixed_.size() < factored_) refactor_ = true;  // a full solve had them: factor again
+    else columns_ = std::min(columns_, fixed_.size() - factored_);
+  }
+
   void set_energy(Triplets energy, Eigen::VectorXd rhs) {
     base_rhs_ = std::move(rhs);
     for (const Row& r : rows_)
@@ -204,6 +225,7 @@ class PenaltySolver {
     factored_ = fixed_.size();
     factored_solution_ = z;
     columns_ = 0;
+    refactor_ = false;
     return z;
   }
 
@@ -213,6 +235,7 @@ class PenaltySolver {
   /// M^-1 (values - U^T x0) (Woodbury; the same as solve() up to round-off). A new
   /// factorization past max_low_rank of them.
   Eigen::VectorXd solve_low_rank() {
+    if (refactor_) return solve();
     const std::size_t k = fixed_.size() - factored_;
     if (k == 0) return factored_solution_;
     if (k > static_cast<std::size_t>(max_low_rank)) return solve();
@@ -260,13 +283,28 @@ class PenaltySolver {
   Eigen::VectorXd factored_solution_;  ///< its solution
   Eigen::MatrixXd Y_;                 ///< H0^-1 e_v of the values fixed since (columns_ of them)
   std::size_t columns_ = 0;
+  bool refactor_ = false;  ///< fixes in the factorization were taken back
 };
+
+/// The integers to try for values `v` at z, nearest first: each value's nearest
+/// integer, then the next one on its other side (for one value also the next on
+/// the same side): what a rounding that would put two corners on one lattice point
+/// falls back to.
+std::vector<std::vector<double>> rounding_options(const std::vector<int>& v, const Eigen::VectorXd& z) {
+  auto nearest = [&](int i) { return std::round(z[i]); };
+  auto other = [&](int i) { return nearest(i) + (z[i] >= nearest(i) ? 1.0 : -1.0); };
+  if (v.size() == 1)
+    return {{nearest(v[0])}, {other(v[0])}, {2 * nearest(v[0]) - other(v[0])}};
+  return {{nearest(v[0]), nearest(v[1])}, {other(v[0]), nearest(v[1])}, {nearest(v[0]), other(v[1])},
+          {other(v[0]), other(v[1])}};
+}
 
 /// Greedy rounding, phase by phase: fix every candidate already integer and the
 /// one nearest to an integer, solve, repeat. Returns the final solution; `fixed`
 /// gets the values made integer.
 Eigen::VectorXd quantize(PenaltySolver& solver, const std::vector<std::vector<int>>& phases,
-                         std::vector<std::pair<int, double>>& integers, SeamlessMapReport& report) {
+                         const BoundarySegments& segments, std::vector<std::pair<int, double>>& integers,
+                         SeamlessMapReport& report) {
   Eigen::VectorXd z = solver.solve();
   ++report.solves;
   std::vector<char> fixed(static_cast<std::size_t>(z.size()), 0);
@@ -291,16 +329,50 @@ Eigen::VectorXd quantize(PenaltySolver& solver, const std::vector<std::vector<in
       // a cone's position and a translation are lattice vectors: both of their
       // coordinates are rounded in one step (one solve, not two)
       const bool paired = &candidates != &phases[1];
-      for (int v : paired ? std::vector<int>{nearest, nearest ^ 1} : std::vector<int>{nearest}) {
-        if (fixed[static_cast<std::size_t>(v)]) continue;
-        fixed[static_cast<std::size_t>(v)] = 1;
-        solver.fix(v, std::round(z[v]));
-        integers.push_back({v, std::round(z[v])});
-        ++report.integer_values;
-        report.max_rounding = std::max(report.max_rounding, std::abs(z[v] - std::round(z[v])));
+      std::vector<int> step;
+      for (int v : paired ? std::vector<int>{nearest, nearest ^ 1} : std::vector<int>{nearest})
+        if (!fixed[static_cast<std::size_t>(v)]) step.push_back(v);
+      // the nearest integers, unless they put two corners on one lattice point (a
+      // boundary segment of length 0) where the next ones do not; when every option
+      // does, the one that collapses fewest
+      const std::size_t before = collapsed_segments(segments, z);
+      const std::vector<std::vector<double>> options = rounding_options(step, z);
+      Eigen::VectorXd next;
+      std::size_t chosen = 0;
+      std::size_t least = 0;
+      for (std::size_t o = 0; o < options.size(); ++o) {
+        for (std::size_t i = 0; i < step.size(); ++i) solver.fix(step[i], options[o][i]);
+        next = solver.solve_low_rank();
+        ++report.solves;
+        const std::size_t harm = collapsed_segments(segments, next);
+        // an integer other than the nearest may contradict values fixed before (the
+        // seams then open): never taken
+        const bool consistent = o == 0 || solver.max_residual(next) < max_option_residual;
+        if (consistent && harm <= before) {
+          chosen = o;
+          break;
+        }
+        if (o == 0 || (consistent && harm < least)) {
+          least = harm;
+          chosen = o;
+        }
+        solver.unfix(step.size());
+        if (o + 1 == options.size()) {
+          for (std::size_t i = 0; i < step.size(); ++i) solver.fix(step[i], options[chosen][i]);
+          next = solver.solve_low_rank();
+          ++report.solves;
+        }
       }
-      z = solver.solve_low_rank();
-      ++report.solves;
+      if (chosen > 0) ++report.corners_kept_apart;
+      for (std::size_t i = 0; i < step.size(); ++i) {
+        const int v = step[i];
+        const double value = options[chosen][i];
+        fixed[static_cast<std::size_t>(v)] = 1;
+        integers.push_back({v, value});
+        ++report.integer_values;
+        report.max_rounding = std::max(report.max_rounding, std::abs(z[v] - value));
+      }
+      z = std::move(next);
     }
   return z;
 }
@@ -340,10 +412,11 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   int variables = 2 * cut.wedge_count;
   const std::vector<int> translations = add_seams(soup, adjacency, field, cut, rows, variables);
   std::vector<double> stiffness(soup.triangles.size(), 1.0);
+  const std::vector<Complex> scales = target_scales(soup, u, field, size);
   auto energy = [&](Triplets& H, Eigen::VectorXd& b) {
     H.clear();
     b = Eigen::VectorXd::Zero(variables);
-    add_fitting_energy(soup, u, field, cut, size, stiffness, H, b);
+    add_fitting_energy(soup, scales, cut, stiffness, H, b);
     // gauge: the map is fixed up to a translation; a faint pull of wedge 0 to 0
     // makes the system definite without competing with the integer values
     H.emplace_back(0, 0, gauge_weight);
@@ -355,7 +428,8 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   PenaltySolver solver(variables, std::move(H), std::move(b), std::move(rows));
   std::vector<std::pair<int, double>> integers;
   Eigen::VectorXd z =
-      quantize(solver, integer_candidates(soup, adjacency, field, cut, quads, translations), integers, report);
+      quantize(solver, integer_candidates(soup, adjacency, field, cut, quads, translations),
+               boundary_segments(soup, adjacency, field, cut, quads, scales), integers, report);
   // stiffening [Bommes et al. 2009]: triangles left folded, and those around
   // them, weigh more in the fit, until none is folded
   for (int round = 0; round < max_stiffening_rounds; ++round) {

@@ -26,6 +26,9 @@ struct SeamlessMapReport {
   double max_rounding = 0;          ///< largest distance a value was moved to its integer
   std::size_t inverted_triangles = 0;  ///< image area <= 0
   int stiffening_rounds = 0;        ///< re-solves with folded triangles weighing more
+  /// roundings that took the next integer, not the nearest, to keep two corners off
+  /// one lattice point (cones/internal/boundary_segments.h)
+  std::size_t corners_kept_apart = 0;
 };
 
 /// Per triangle corner, the value of the wedge it belongs to. `u` from

@@ -139,6 +139,26 @@ void check_cone_quads(const LatticeQuads& q, const std::vector<Cone>& cones) {
   }
 }
 
+/// A 2 x 1 rectangle with a strip of height `step` on its left half: a 270-degree
+/// corner at (1, 1) and a right corner at (1, 1 + step) `step` apart. Triangles of
+/// 1/8 by 1/8 (the strip: 1/8 by step).
+TriangleSoup stepped_rectangle(double step) {
+  TriangleSoup s;
+  std::map<std::pair<int, int>, int> id;
+  auto point = [&](int i, int j) {
+    const auto [it, fresh] = id.emplace(std::make_pair(i, j), static_cast<int>(s.points.size()));
+    if (fresh) s.points.emplace_back(i / 8.0, j <= 8 ? j / 8.0 : 1 + step, 0.0);
+    return it->second;
+  };
+  for (int i = 0; i < 16; ++i)
+    for (int j = 0; j < 9; ++j) {
+      if (j == 8 && i >= 8) continue;
+      s.triangles.push_back({point(i, j), point(i + 1, j), point(i + 1, j + 1)});
+      s.triangles.push_back({point(i, j), point(i + 1, j + 1), point(i, j + 1)});
+    }
+  return s;
+}
+
 std::vector<Cone> square_corners(const TriangleSoup& soup, double side) {
   return {{vertex_at(soup, 0, 0), 1}, {vertex_at(soup, side, 0), 1}, {vertex_at(soup, side, side), 1},
           {vertex_at(soup, 0, side), 1}};
@@ -219,6 +239,31 @@ TEST_CASE("an L-shape with its five convex corners and one concave corner maps o
   check_cones(soup, m.map, cones);
   const LatticeQuads q = complete_quads(soup, adjacency, m.map);
   CHECK(q.quads.size() == 27);
+  CHECK(euler_and_singular(q) == std::pair{1, 0});
+  check_cone_quads(q, cones);
+}
+
+TEST_CASE("two corners 0.4 quads apart are not rounded onto one lattice point") {
+  // quads of 1/4: the step between the 270-degree corner and the right corner above
+  // it is 0.4 quads, and both lines across it lie nearest to one integer
+  const TriangleSoup soup = stepped_rectangle(0.1);
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  std::vector<Cone> cones;
+  for (auto [x, y] : {std::pair{0.0, 0.0}, {2.0, 0.0}, {2.0, 1.0}, {1.0, 1.1}, {0.0, 1.1}})
+    cones.push_back({vertex_at(soup, x, y), 1});
+  cones.push_back({vertex_at(soup, 1.0, 1.0), 3});
+  for (const Cone& c : cones) REQUIRE(c.vertex >= 0);
+  const ConeMap m = cone_map(soup, adjacency, cones, 0.25);
+  CHECK(m.report.max_seam_residual < 1e-6);
+  CHECK(m.report.corners_kept_apart >= 1);
+  CHECK(m.report.inverted_triangles == 0);
+  check_cones(soup, m.map, cones);
+  // the step is one quad high: the two corners' images differ by 1 along it
+  const Complex low = images_of(soup, m.map, cones[5].vertex).front();
+  const Complex high = images_of(soup, m.map, cones[3].vertex).front();
+  CHECK(std::abs(high - low) == doctest::Approx(1.0));
+  const LatticeQuads q = complete_quads(soup, adjacency, m.map);
+  CHECK(static_cast<long>(q.quads.size()) == std::lround(total_image_area(m.map)));
   CHECK(euler_and_singular(q) == std::pair{1, 0});
   check_cone_quads(q, cones);
 }

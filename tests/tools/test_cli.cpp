@@ -558,6 +558,35 @@ TEST_CASE("mesh --singularities auto: a T-plate the Abel route folds meshes with
   CHECK(q["size_band_share"].get<double>() >= 0.85);
 }
 
+TEST_CASE("mesh --singularities auto: kitten's coarse hole polygons get every corner right, the quads in the band" *
+          doctest::test_suite("slow")) {
+  // its two holes are polygons of 19 and 21 edges of 0.65 to 2.7 quads, with corners
+  // of 104 and 264 degrees next to each other: quantization must keep consecutive
+  // corners off one lattice point
+  const std::string dir = test::scratch_dir("cli_singularities_kitten");
+  const std::string output = dir + "/out.msh", report = dir + "/report.json";
+  const Run run = quadmesh("mesh " + quoted(test::shared_mesh("kitten-2holes.obj")) + " -o " + quoted(output) +
+                           " --size 1.5% --singularities auto -q --report " + quoted(report));
+  REQUIRE(run.status == 0);
+  const auto j = nlohmann::json::parse(slurp(report));
+  CHECK(j["singularities"]["route"] == "cones");
+  const auto& q = j["quality"];
+  CHECK(q["euler_characteristic"] == -2);
+  CHECK(q["boundary_loops"] == 2);
+  CHECK(q["triangles"] == 0);
+  CHECK(q["inverted"] == 0);
+  CHECK(q["corners"]["convex"].get<int>() + q["corners"]["concave"].get<int>() >= 8);
+  CHECK(q["corners"]["convex_wrong"] == 0);
+  CHECK(q["corners"]["concave_wrong"] == 0);
+  CHECK(q["corners"]["other_wrong"] == 0);
+  CHECK(q["irregular_interior"].get<int>() <= 24);
+  CHECK(q["min_scaled_jacobian"].get<double>() >= 0.3);
+  CHECK(q["angle_dev_mean"].get<double>() <= 5.0);
+  CHECK(q["hausdorff_rel"].get<double>() <= 0.01);
+  CHECK(q["size_band_share"].get<double>() >= 0.9);
+  CHECK(q["size_ratio_max"].get<double>() <= 3.0);
+}
+
 TEST_CASE("mesh: an input far finer than the quads is meshed on a working triangulation, measured against the input") {
   const std::string dir = test::scratch_dir("cli_coarsen");
   const TriangleSoup fine = test::annulus(1.0, 2.0, 50, 300);  // 30000 triangles, edges 0.02 to 0.04
