@@ -3,13 +3,17 @@
 #include "libquadmesh/cones/internal/boundary_segments.h"
 #include "libquadmesh/cones/internal/face_geometry.h"
 #include "libquadmesh/core/error.h"
+#include "libquadmesh/core/internal/union_find.h"
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
 #include <algorithm>
+#include <array>
+#include <map>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace qm {
@@ -27,6 +31,8 @@ constexpr double gauge_weight = 1e-3;
 /// weight takes each round.
 constexpr int max_stiffening_rounds = 12;
 constexpr double stiffening_factor = 2.0;
+/// Stiffening stops when this many rounds in a row leave no fewer folds than before.
+constexpr int stiffening_patience = 4;
 /// The stiffness no triangle exceeds (the constraints' penalty stays far above).
 constexpr double max_stiffness = 1e3;
 /// A value this close to an integer after a solve is taken as integer.
@@ -103,11 +109,21 @@ void add_fitting_energy(const TriangleSoup& soup, const std::vector<Complex>& sc
   }
 }
 
-/// Transitions across cut edges and boundary alignment; returns the first
-/// translation variable of every cut edge (in order of discovery).
-std::vector<int> add_seams(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const CrossField& field,
-                           const CutGraph& cut, std::vector<Row>& rows, int& variables) {
-  std::vector<int> translations;
+/// A cut edge's translation variable (the first of two) and, at each of its ends,
+/// the transition it takes part in: (wedge on the far side, wedge on the near side,
+/// quarter turns). Two cut edges with one such transition in common have one
+/// translation (their rows say so).
+struct Translation {
+  int variable = -1;
+  std::array<std::array<int, 3>, 2> ends{};
+};
+
+/// Transitions across cut edges and boundary alignment; returns the translation of
+/// every cut edge (in order of discovery).
+std::vector<Translation> add_seams(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                   const CrossField& field, const CutGraph& cut, std::vector<Row>& rows,
+                                   int& variables) {
+  std::vector<Translation> translations;
   for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
     const Triangle& t = soup.triangles[f];
     for (int k = 0; k < 3; ++k) {
@@ -126,11 +142,16 @@ std::vector<int> add_seams(const TriangleSoup& soup, const SurfaceAdjacency& adj
       const auto gf = static_cast<std::size_t>(g.face);
       const int t_var = variables;
       variables += 2;
-      translations.push_back(t_var);
       const int q = field.quarter_turns[f][ks];
       // a = t[k] sits at g's corner g.j, b = t[k + 1] at g.i
-      add_transition(cut.wedge[gf][static_cast<std::size_t>(g.j)], cut.wedge[f][ks], q, t_var, rows);
-      add_transition(cut.wedge[gf][static_cast<std::size_t>(g.i)], cut.wedge[f][ke], q, t_var, rows);
+      const int ga = cut.wedge[gf][static_cast<std::size_t>(g.j)], gb = cut.wedge[gf][static_cast<std::size_t>(g.i)];
+      add_transition(ga, cut.wedge[f][ks], q, t_var, rows);
+      add_transition(gb, cut.wedge[f][ke], q, t_var, rows);
+      Translation translation;
+      translation.variable = t_var;
+      translation.ends[0] = {ga, cut.wedge[f][ks], q};
+      translation.ends[1] = {gb, cut.wedge[f][ke], q};
+      translations.push_back(translation);
     }
   }
   return translations;
@@ -141,11 +162,25 @@ std::vector<int> add_seams(const TriangleSoup& soup, const SurfaceAdjacency& adj
 /// the cone's position, integer once the position is, while an integer translation
 /// may leave the cone at a half-integer point), then the boundary lines, then the
 /// cut translations.
-std::vector<std::vector<int>> integer_candidates(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
-                                                 const CrossField& field, const CutGraph& cut,
-                                                 const std::vector<int>& quads, const std::vector<int>& translations) {
-  std::vector<std::vector<int>> phases(3);
+struct IntegerCandidates {
+  std::vector<std::vector<int>> phases;
+  /// per variable, the candidate it equals by the seam rows (-1: none but itself):
+  /// set to the same integer at the end
+  std::vector<int> same_as;
+};
+
+IntegerCandidates integer_candidates(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                     const CrossField& field, const CutGraph& cut, const std::vector<int>& quads,
+                                     const std::vector<Translation>& translations, int variables) {
+  IntegerCandidates out;
+  out.same_as.assign(static_cast<std::size_t>(variables), -1);
+  std::vector<std::vector<int>>& phases = out.phases;
+  phases.resize(3);
   std::vector<char> seen(soup.points.size(), 0);
+  // a boundary line's values at its wedges are one value (the seam rows tie them):
+  // one of them is made integer, not each (each would cost the rounding a solve)
+  UnionFind line(static_cast<std::size_t>(2 * cut.wedge_count));
+  std::vector<int> line_values;
   for (std::size_t f = 0; f < soup.triangles.size(); ++f)
     for (int k = 0; k < 3; ++k) {
       const auto ks = static_cast<std::size_t>(k);
@@ -160,15 +195,44 @@ std::vector<std::vector<int>> integer_candidates(const TriangleSoup& soup, const
       if (axis >= 0) {
         // both ends: a cut that ends at a boundary vertex parts its two sides' wedges
         const int end = cut.wedge[f][static_cast<std::size_t>((k + 1) % 3)];
-        phases[1].push_back(axis == 0 ? imag_of(wedge) : real_of(wedge));
-        phases[1].push_back(axis == 0 ? imag_of(end) : real_of(end));
+        const int a = axis == 0 ? imag_of(wedge) : real_of(wedge), b = axis == 0 ? imag_of(end) : real_of(end);
+        line.unite(a, b);
+        line_values.push_back(a);
+        line_values.push_back(b);
       }
     }
-  for (int t_var : translations) {
-    phases[2].push_back(t_var);
-    phases[2].push_back(t_var + 1);
+  std::vector<int> first_of(static_cast<std::size_t>(2 * cut.wedge_count), -1);
+  for (int v : line_values) {
+    int& first = first_of[static_cast<std::size_t>(line.find(v))];
+    if (first < 0) {
+      first = v;
+      phases[1].push_back(v);
+    } else if (first != v) {
+      out.same_as[static_cast<std::size_t>(v)] = first;
+    }
   }
-  return phases;
+  // likewise the translations of a cut path's edges: one per path
+  std::map<std::array<int, 3>, int> first_at;
+  UnionFind path(translations.size());
+  for (std::size_t i = 0; i < translations.size(); ++i)
+    for (const std::array<int, 3>& end : translations[i].ends) {
+      const auto [at, fresh] = first_at.emplace(end, static_cast<int>(i));
+      if (!fresh) path.unite(at->second, static_cast<int>(i));
+    }
+  std::vector<int> first_path(translations.size(), -1);
+  for (std::size_t i = 0; i < translations.size(); ++i) {
+    const int t = translations[i].variable;
+    int& first = first_path[static_cast<std::size_t>(path.find(static_cast<int>(i)))];
+    if (first >= 0) {
+      out.same_as[static_cast<std::size_t>(t)] = first;
+      out.same_as[static_cast<std::size_t>(t + 1)] = first + 1;
+      continue;
+    }
+    first = t;
+    phases[2].push_back(t);
+    phases[2].push_back(t + 1);
+  }
+  return out;
 }
 
 /// The fitting energy with the seam rows and the fixed values as penalties,
@@ -240,11 +304,14 @@ class PenaltySolver {
     if (k == 0) return factored_solution_;
     if (k > static_cast<std::size_t>(max_low_rank)) return solve();
     if (Y_.rows() != n_) Y_.resize(n_, max_low_rank);
-    for (; columns_ < k; ++columns_) {
-      Eigen::VectorXd e = Eigen::VectorXd::Zero(n_);
-      e[fixed_[factored_ + columns_].first] = 1;
-      Y_.col(static_cast<Eigen::Index>(columns_)) = solver_.solve(e);
+    if (columns_ < k) {
+      // the new columns in one solve with as many right sides
+      const auto fresh = static_cast<Eigen::Index>(k - columns_);
+      Eigen::MatrixXd E = Eigen::MatrixXd::Zero(n_, fresh);
+      for (Eigen::Index c = 0; c < fresh; ++c) E(fixed_[factored_ + columns_ + static_cast<std::size_t>(c)].first, c) = 1;
+      Y_.middleCols(static_cast<Eigen::Index>(columns_), fresh) = solver_.solve(E);
       if (solver_.info() != Eigen::Success) throw Error(ErrorCode::solver, "the seamless map's solve failed");
+      columns_ = k;
     }
     const auto K = static_cast<Eigen::Index>(k);
     Eigen::MatrixXd M = Eigen::MatrixXd::Identity(K, K) / penalty_weight;
@@ -410,7 +477,7 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   report = {};
   std::vector<Row> rows;
   int variables = 2 * cut.wedge_count;
-  const std::vector<int> translations = add_seams(soup, adjacency, field, cut, rows, variables);
+  const std::vector<Translation> translations = add_seams(soup, adjacency, field, cut, rows, variables);
   std::vector<double> stiffness(soup.triangles.size(), 1.0);
   const std::vector<Complex> scales = target_scales(soup, u, field, size);
   auto energy = [&](Triplets& H, Eigen::VectorXd& b) {
@@ -427,14 +494,23 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   energy(H, b);
   PenaltySolver solver(variables, std::move(H), std::move(b), std::move(rows));
   std::vector<std::pair<int, double>> integers;
-  Eigen::VectorXd z =
-      quantize(solver, integer_candidates(soup, adjacency, field, cut, quads, translations),
-               boundary_segments(soup, adjacency, field, cut, quads, scales), integers, report);
+  const IntegerCandidates candidates = integer_candidates(soup, adjacency, field, cut, quads, translations, variables);
+  Eigen::VectorXd z = quantize(solver, candidates.phases,
+                               boundary_segments(soup, adjacency, field, cut, quads, scales), integers, report);
   // stiffening [Bommes et al. 2009]: triangles left folded, and those around
-  // them, weigh more in the fit, until none is folded
-  for (int round = 0; round < max_stiffening_rounds; ++round) {
+  // them, weigh more in the fit, until none is folded. Not when the integer values
+  // contradict the seams (no stiffness closes them), nor once the folds have not
+  // become fewer in stiffening_patience rounds (a fold pinned between integer
+  // values does not move)
+  const bool seams_close = solver.max_residual(z) < max_option_residual;
+  std::size_t fewest = std::numeric_limits<std::size_t>::max();
+  int stalled = 0;
+  for (int round = 0; seams_close && round < max_stiffening_rounds && stalled < stiffening_patience; ++round) {
     const std::vector<char> folded = folded_triangles(cut, z);
-    if (std::find(folded.begin(), folded.end(), 1) == folded.end()) break;
+    const auto count = static_cast<std::size_t>(std::count(folded.begin(), folded.end(), 1));
+    if (count == 0) break;
+    stalled = count < fewest ? 0 : stalled + 1;
+    fewest = std::min(fewest, count);
     stiffen(soup, adjacency, folded, stiffness);
     energy(H, b);
     solver.set_energy(std::move(H), std::move(b));
@@ -446,6 +522,8 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   // fixed-point unit (2^-30): they are set exactly, so that cones and boundary
   // lines are lattice points and lines in every chart
   for (const auto& [v, value] : integers) z[v] = value;
+  for (std::size_t v = 0; v < candidates.same_as.size(); ++v)
+    if (candidates.same_as[v] >= 0) z[static_cast<Eigen::Index>(v)] = z[candidates.same_as[v]];
   report.max_seam_residual = solver.max_residual(z);
 
   FaceMap map;
