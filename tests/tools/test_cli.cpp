@@ -555,7 +555,10 @@ TEST_CASE("mesh --singularities auto: a T-plate the Abel route folds meshes with
   CHECK(q["min_scaled_jacobian"].get<double>() >= 0.3);
   CHECK(q["angle_dev_mean"].get<double>() <= 5.0);
   CHECK(q["hausdorff_rel"].get<double>() <= 0.01);
-  CHECK(q["size_band_share"].get<double>() >= 0.85);
+  CHECK(q["size_band_share"].get<double>() >= 0.9);
+  // the first lattice leaves a flange corner's quad at 3.09 x the size: a finer one
+  // is tried and kept
+  CHECK(q["size_ratio_max"].get<double>() <= 3.0);
 }
 
 TEST_CASE("mesh --singularities auto: kitten's coarse hole polygons get every corner right, the quads in the band" *

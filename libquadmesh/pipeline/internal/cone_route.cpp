@@ -30,10 +30,10 @@ std::vector<ConePlacementOptions> cone_placements() {
 }
 
 Candidate cone_attempt(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages,
-                       std::vector<std::vector<Cone>>& placed) {
+                       std::vector<std::vector<Cone>>& placed, double lattice_scale) {
   QuadMeshResult r = setup.preamble;
   const TriangleSoup& soup = setup.soup;
-  const double size = setup.preamble.size_requested;
+  const double size = setup.preamble.size_requested * lattice_scale;
   const SurfaceAdjacency adjacency = surface_adjacency(soup);
   stages.next("cone_placement",
               fmt::format("placing quarter-turn cones (corners, then the interior, {:g} quads from the boundary and "
@@ -129,14 +129,23 @@ double relative_hausdorff(const QuadMeshResult& r) {
   return two_sided_hausdorff(r.quads.points, halves, r.surface.points, r.surface.triangles).value() / diagonal;
 }
 
-double band_share(const QuadMeshResult& r) {
-  if (r.quads.quads.empty() || !(r.size_requested > 0)) return 0.0;
-  return quad_size_band(polygon_mesh(r.quads), r.size_requested).share_in_band;
+SizeBand size_band(const QuadMeshResult& r) {
+  if (r.quads.quads.empty() || !(r.size_requested > 0)) return {};
+  return quad_size_band(polygon_mesh(r.quads), r.size_requested);
 }
+
+double band_share(const QuadMeshResult& r) { return size_band(r).share_in_band; }
 
 }  // namespace
 
 namespace {
+
+/// The largest quad size (x the requested size) the acceptance allows (issue 18),
+/// and the lattices tried, finer by these factors, when a sound result exceeds it.
+constexpr double max_size_ratio = 3.0;
+constexpr double finer_lattices[] = {0.95, 0.9};
+constexpr int max_finer_attempts = 6;
+constexpr double finer_lattice_below = 1.1;
 
 /// The cone route's candidate: the placements in turn, until one gives sound quads
 /// (cramped cones fold the map). Throws qm::Error with the first placement's
@@ -156,6 +165,36 @@ Candidate cone_candidate(const FormSetup& setup, const QuadMeshOptions& options,
     if (sound(cones.quality, input, options.acceptance)) break;
   }
   if (!cones.quality.has_quads) throw Error(ErrorCode::unsupported, placement_failure);
+  // sound, but some quads a little larger than the acceptance allows: where the
+  // lattice falls against the cone metric's sizes is a matter of rounding, so the
+  // lattice a little finer (the cones placed again at its size), kept when its
+  // quads stay within max_size_ratio and in the band. Far larger quads are the
+  // metric's (too few cones), which no lattice mends
+  const SizeBand band = size_band(cones.result);
+  if (sound(cones.quality, input, options.acceptance) && band.max_ratio > max_size_ratio &&
+      band.max_ratio <= finer_lattice_below * max_size_ratio) {
+    int attempts = 0;
+    for (double scale : finer_lattices) {
+      std::vector<std::vector<Cone>> placed_finer;
+      bool done = false;
+      for (const ConePlacementOptions& placement : cone_placements()) {
+        if (attempts++ == max_finer_attempts) break;
+        Candidate finer;
+        try {
+          finer = cone_attempt(setup, placement, stages, placed_finer, scale);
+        } catch (const Error&) {
+          continue;
+        }
+        if (!sound(finer.quality, input, options.acceptance)) continue;
+        const SizeBand finer_band = size_band(finer.result);
+        done = finer_band.max_ratio <= max_size_ratio &&
+               finer_band.share_in_band >= std::min(band.share_in_band, size_band_goal);
+        if (done) cones = std::move(finer);
+        break;  // the first sound placement at this lattice, as above
+      }
+      if (done) break;
+    }
+  }
   return cones;
 }
 
