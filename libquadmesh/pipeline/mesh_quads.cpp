@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace qm {
 
@@ -146,6 +147,14 @@ QuadMeshResult mesh_quads_maybe_split(TriangleSoup soup, const QuadMeshOptions& 
     fine_ok = false;
   }
   const double fine_seconds = seconds_since(start);
+  // the cone route ran first there and met every criterion it is held to (sound,
+  // the size band, every corner, the Hausdorff distance: cone_route.h
+  // try_cones_first), so the Abel route was not run: nor is the input as it is
+  if (fine_ok && fine.singularities == "cones" && std::isnan(fine.abel_size_band_share)) {
+    fine.long_edges_split = splits;
+    fine.long_edges_kept = true;
+    return fine;
+  }
   if (progress) progress("meshing the input as it is");
   start = std::chrono::steady_clock::now();
   // where the cone route failed on the finer triangulation it is not tried again
