@@ -82,20 +82,37 @@ std::vector<int> ring_neighbourhood(const TriangleSoup& soup, const SurfaceAdjac
 /// Per vertex: within `separation` edges of an interior cone other than cones[moving].
 std::vector<char> crowded(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const std::vector<Cone>& cones,
                           std::ptrdiff_t moving, int separation) {
+  // one breadth-first walk from all of them at once: the union of their
+  // neighbourhoods of `separation` rings
   std::vector<char> near(soup.points.size(), 0);
-  for (std::size_t j = 0; j < cones.size(); ++j)
-    if (static_cast<std::ptrdiff_t>(j) != moving && !adjacency.boundary_vertex[static_cast<std::size_t>(cones[j].vertex)])
-      for (int w : ring_neighbourhood(soup, adjacency, cones[j].vertex, separation)) near[static_cast<std::size_t>(w)] = 1;
+  std::vector<int> depth(soup.points.size(), -1);
+  std::vector<int> order;
+  for (std::size_t j = 0; j < cones.size(); ++j) {
+    const auto v = static_cast<std::size_t>(cones[j].vertex);
+    if (static_cast<std::ptrdiff_t>(j) == moving || adjacency.boundary_vertex[v] || depth[v] == 0) continue;
+    depth[v] = 0;
+    order.push_back(cones[j].vertex);
+  }
+  for (std::size_t next = 0; next < order.size(); ++next) {
+    const auto w = static_cast<std::size_t>(order[next]);
+    near[w] = 1;
+    if (depth[w] == separation) continue;
+    for (int f : adjacency.vertex_faces[w])
+      for (int x : soup.triangles[static_cast<std::size_t>(f)])
+        if (depth[static_cast<std::size_t>(x)] < 0) {
+          depth[static_cast<std::size_t>(x)] = depth[w] + 1;
+          order.push_back(x);
+        }
+  }
   return near;
 }
 
 /// Moves interior cones, one at a time, to where the field meets every boundary
 /// loop closest to a whole quarter turn (cross_field.h LoopTurns), within
 /// `rings` edges of where they are. Returns the largest turn left (radians).
-double align_loops_by_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
-                            const ConeMetricSolver& solver, const std::vector<double>& curvature,
-                            const std::vector<char>& eligible, int rings, int separation, std::vector<Cone>& cones) {
-  const LoopTurns model = loop_turns(soup, adjacency, solver);
+double align_loops_by_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const LoopTurns& model,
+                            const std::vector<double>& curvature, const std::vector<char>& eligible, int rings,
+                            int separation, std::vector<Cone>& cones) {
   const std::size_t loops = adjacency.boundary_loops.size();
   std::vector<double> kappa = target_curvature(adjacency, quads_per_vertex(adjacency, cones));
   Eigen::VectorXd rhs(static_cast<Eigen::Index>(kappa.size()));
@@ -174,11 +191,10 @@ double size_spread(const Eigen::VectorXd& u, const std::vector<double>& area, do
 /// turns (LoopTurns) stay within `slack` of whole quarter turns or no worse than
 /// they were.
 void relax_cones_for_size(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const ConeMetricSolver& solver,
-                          const std::vector<double>& curvature, const std::vector<double>& area,
-                          const std::vector<char>& eligible, int separation, int passes, double slack,
-                          std::vector<Cone>& cones) {
+                          const LoopTurns& model, const std::vector<double>& curvature,
+                          const std::vector<double>& area, const std::vector<char>& eligible, int separation,
+                          int passes, double slack, std::vector<Cone>& cones) {
   const std::size_t loops = adjacency.boundary_loops.size();
-  const LoopTurns model = loops > 1 ? loop_turns(soup, adjacency, solver) : LoopTurns{};
   auto alignment_cost = [&](const std::vector<Cone>& trial) {
     if (loops < 2) return 0.0;
     const std::vector<double> kappa = target_curvature(adjacency, quads_per_vertex(adjacency, trial));
@@ -431,13 +447,13 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
   const auto settle = [&](std::vector<Cone>& set) {
     if (set.size() == corner_count) return;
     if (several_loops)
-      align_loops_by_cones(soup, adjacency, solver, curvature, eligible, options.alignment_rings,
+      align_loops_by_cones(soup, adjacency, model, curvature, eligible, options.alignment_rings,
                            options.cone_separation, set);
     if (options.size_relaxation_passes > 0) {
-      relax_cones_for_size(soup, adjacency, solver, curvature, area, eligible, options.cone_separation,
+      relax_cones_for_size(soup, adjacency, solver, model, curvature, area, eligible, options.cone_separation,
                            options.size_relaxation_passes, options.relaxation_alignment_slack, set);
       if (several_loops)
-        align_loops_by_cones(soup, adjacency, solver, curvature, eligible, options.alignment_rings,
+        align_loops_by_cones(soup, adjacency, model, curvature, eligible, options.alignment_rings,
                              options.cone_separation, set);
     }
   };
