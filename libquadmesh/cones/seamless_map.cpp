@@ -41,9 +41,10 @@ constexpr double integer_tolerance = 1e-6;
 /// a diagonal penalty, a rank-one change, solved by the Woodbury identity on the
 /// last factorization (one back-substitution per value) until this many.
 constexpr int max_low_rank = 64;
-/// A rounding to other than the nearest integer is refused when it leaves a seam or
-/// a fixed value off by more than this (lattice units).
-constexpr double max_option_residual = 1e-4;
+/// Seams and fixed values hold when no residual is above this (lattice units): a
+/// rounding to other than the nearest integer that breaks them is refused, and no
+/// stiffening is tried on integers that break them.
+constexpr double max_consistent_residual = 1e-4;
 
 /// A real linear constraint sum coefficient * variable = rhs.
 struct Row {
@@ -414,7 +415,7 @@ Eigen::VectorXd quantize(PenaltySolver& solver, const std::vector<std::vector<in
         const std::size_t harm = collapsed_segments(segments, next);
         // an integer other than the nearest may contradict values fixed before (the
         // seams then open): never taken
-        const bool consistent = o == 0 || solver.max_residual(next) < max_option_residual;
+        const bool consistent = o == 0 || solver.max_residual(next) < max_consistent_residual;
         if (consistent && harm <= before) {
           chosen = o;
           break;
@@ -502,7 +503,7 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   // contradict the seams (no stiffness closes them), nor once the folds have not
   // become fewer in stiffening_patience rounds (a fold pinned between integer
   // values does not move)
-  const bool seams_close = solver.max_residual(z) < max_option_residual;
+  const bool seams_close = solver.max_residual(z) < max_consistent_residual;
   std::size_t fewest = std::numeric_limits<std::size_t>::max();
   int stalled = 0;
   for (int round = 0; seams_close && round < max_stiffening_rounds && stalled < stiffening_patience; ++round) {

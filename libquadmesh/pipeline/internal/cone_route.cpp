@@ -134,8 +134,6 @@ SizeBand size_band(const QuadMeshResult& r) {
   return quad_size_band(polygon_mesh(r.quads), r.size_requested);
 }
 
-double band_share(const QuadMeshResult& r) { return size_band(r).share_in_band; }
-
 }  // namespace
 
 namespace {
@@ -147,55 +145,63 @@ constexpr double finer_lattices[] = {0.95, 0.9};
 constexpr int max_finer_attempts = 6;
 constexpr double finer_lattice_below = 1.1;
 
+/// The first placement of cone_placements() whose quads at `lattice_scale` are
+/// sound, each placement one of `attempts_left` (counted down, a thrown one too).
+/// When none is sound: the last that gave quads, measured; nothing when every one
+/// threw (`failure` then says why the first did).
+std::optional<ConeCandidate> first_sound_placement(const FormSetup& setup, const QuadMeshOptions& options,
+                                                   SurfaceTopology input, Stages& stages, double lattice_scale,
+                                                   int& attempts_left, std::string& failure) {
+  std::optional<Candidate> last;
+  std::vector<std::vector<Cone>> placed;
+  for (const ConePlacementOptions& placement : cone_placements()) {
+    if (attempts_left == 0) break;
+    --attempts_left;
+    try {
+      last = cone_attempt(setup, placement, stages, placed, lattice_scale);
+    } catch (const Error& e) {
+      if (failure.empty()) failure = e.what();
+      continue;
+    }
+    if (sound(last->quality, input, options.acceptance)) break;
+  }
+  if (!last || !last->quality.has_quads) return std::nullopt;
+  ConeCandidate out;
+  out.band = size_band(last->result);
+  out.candidate = std::move(*last);
+  return out;
+}
+
 /// The cone route's candidate: the placements in turn, until one gives sound quads
 /// (cramped cones fold the map). Throws qm::Error with the first placement's
 /// failure when none gives quads.
-Candidate cone_candidate(const FormSetup& setup, const QuadMeshOptions& options, SurfaceTopology input,
-                         Stages& stages) {
-  Candidate cones;
-  std::string placement_failure;
-  std::vector<std::vector<Cone>> placed;
-  for (const ConePlacementOptions& placement : cone_placements()) {
-    try {
-      cones = cone_attempt(setup, placement, stages, placed);
-    } catch (const Error& e) {
-      if (placement_failure.empty()) placement_failure = e.what();
-      continue;
-    }
-    if (sound(cones.quality, input, options.acceptance)) break;
-  }
-  if (!cones.quality.has_quads) throw Error(ErrorCode::unsupported, placement_failure);
+ConeCandidate cone_candidate(const FormSetup& setup, const QuadMeshOptions& options, SurfaceTopology input,
+                             Stages& stages) {
+  std::string failure;
+  int every_placement = static_cast<int>(cone_placements().size());
+  std::optional<ConeCandidate> cones =
+      first_sound_placement(setup, options, input, stages, 1.0, every_placement, failure);
+  if (!cones) throw Error(ErrorCode::unsupported, failure);
   // sound, but some quads a little larger than the acceptance allows: where the
   // lattice falls against the cone metric's sizes is a matter of rounding, so the
   // lattice a little finer (the cones placed again at its size), kept when its
   // quads stay within max_size_ratio and in the band. Far larger quads are the
   // metric's (too few cones), which no lattice mends
-  const SizeBand band = size_band(cones.result);
-  if (sound(cones.quality, input, options.acceptance) && band.max_ratio > max_size_ratio &&
-      band.max_ratio <= finer_lattice_below * max_size_ratio) {
-    int attempts = 0;
-    for (double scale : finer_lattices) {
-      std::vector<std::vector<Cone>> placed_finer;
-      bool done = false;
-      for (const ConePlacementOptions& placement : cone_placements()) {
-        if (attempts++ == max_finer_attempts) break;
-        Candidate finer;
-        try {
-          finer = cone_attempt(setup, placement, stages, placed_finer, scale);
-        } catch (const Error&) {
-          continue;
-        }
-        if (!sound(finer.quality, input, options.acceptance)) continue;
-        const SizeBand finer_band = size_band(finer.result);
-        done = finer_band.max_ratio <= max_size_ratio &&
-               finer_band.share_in_band >= std::min(band.share_in_band, size_band_goal);
-        if (done) cones = std::move(finer);
-        break;  // the first sound placement at this lattice, as above
-      }
-      if (done) break;
-    }
+  const SizeBand band = cones->band;
+  if (!sound(cones->candidate.quality, input, options.acceptance) || band.max_ratio <= max_size_ratio ||
+      band.max_ratio > finer_lattice_below * max_size_ratio)
+    return std::move(*cones);
+  int attempts_left = max_finer_attempts;
+  for (double scale : finer_lattices) {
+    std::string ignored;
+    std::optional<ConeCandidate> finer =
+        first_sound_placement(setup, options, input, stages, scale, attempts_left, ignored);
+    if (!finer || !sound(finer->candidate.quality, input, options.acceptance)) continue;
+    if (finer->band.max_ratio <= max_size_ratio &&
+        finer->band.share_in_band >= std::min(band.share_in_band, size_band_goal))
+      return std::move(*finer);
   }
-  return cones;
+  return std::move(*cones);
 }
 
 }  // namespace
@@ -209,11 +215,15 @@ ConesFirst try_cones_first(const FormSetup& setup, const QuadMeshOptions& option
   ConesFirst out;
   if (!cones_first(setup.soup, options)) return out;
   try {
-    Candidate cones = cone_candidate(setup, options, input, stages);
-    const bool enough = sound(cones.quality, input, options.acceptance) && band_share(cones.result) >= size_band_goal &&
-                        corner_mismatches(cones.result) == 0 &&
-                        relative_hausdorff(cones.result) <= options.acceptance.max_hausdorff_relative;
-    (enough ? out.kept : out.tried) = std::move(cones);
+    ConeCandidate cones = cone_candidate(setup, options, input, stages);
+    const QuadMeshResult& r = cones.candidate.result;
+    const bool enough = sound(cones.candidate.quality, input, options.acceptance) &&
+                        cones.band.share_in_band >= size_band_goal && corner_mismatches(r) == 0 &&
+                        relative_hausdorff(r) <= options.acceptance.max_hausdorff_relative;
+    if (enough)
+      out.kept = std::move(cones.candidate);
+    else
+      out.tried = std::move(cones);
   } catch (const Error& e) {
     out.failure = e.what();
   }
@@ -224,7 +234,7 @@ ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOpt
                                        Stages& stages, Candidate& best, ConesFirst first) {
   ConeRouteOutcome outcome;
   if (options.singularities != Singularities::automatic) return outcome;
-  const double abel_band = best.quality.has_quads ? band_share(best.result) : 0.0;
+  const double abel_band = best.quality.has_quads ? size_band(best.result).share_in_band : 0.0;
   outcome.abel_size_band_share = abel_band;
   const std::size_t abel_corners = best.quality.has_quads ? corner_mismatches(best.result) : 0;
   if (abel_band >= size_band_goal && abel_corners == 0) return outcome;
@@ -233,8 +243,9 @@ ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOpt
     return outcome;
   }
   try {
-    Candidate cones = first.tried ? std::move(*first.tried) : cone_candidate(setup, options, input, stages);
-    const double cones_band = band_share(cones.result);
+    ConeCandidate tried = first.tried ? std::move(*first.tried) : cone_candidate(setup, options, input, stages);
+    Candidate& cones = tried.candidate;
+    const double cones_band = tried.band.share_in_band;
     const std::size_t cones_corners = corner_mismatches(cones.result);
     if (!cones_replace(cones.quality, cones_band, abel_band, cones_corners, abel_corners, input, options.acceptance)) {
       outcome.failure = fmt::format(

@@ -8,6 +8,7 @@
 #include "libquadmesh/pipeline/internal/candidate_ranking.h"
 #include "libquadmesh/pipeline/internal/form_setup.h"
 #include "libquadmesh/pipeline/internal/stages.h"
+#include "libquadmesh/quality/size_band.h"
 
 #include <limits>
 #include <optional>
@@ -63,9 +64,14 @@ bool cones_replace(const CandidateQuality& cones, double cones_band, double abel
 /// lies within the Hausdorff criterion, else it is `tried` (for
 /// try_cones_if_off_band to weigh against the Abel quads), or `failure` says why
 /// there is none.
+/// A cone candidate with its quads' size band (measured once).
+struct ConeCandidate {
+  Candidate candidate;
+  SizeBand band;
+};
 struct ConesFirst {
   std::optional<Candidate> kept;
-  std::optional<Candidate> tried;
+  std::optional<ConeCandidate> tried;
   std::string failure;
 };
 bool cones_first(const TriangleSoup& soup, const QuadMeshOptions& options);
