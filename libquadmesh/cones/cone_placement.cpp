@@ -5,6 +5,7 @@
 #include "libquadmesh/cones/cone_map.h"
 #include "libquadmesh/cones/cone_metric.h"
 #include "libquadmesh/cones/cross_field.h"
+#include "libquadmesh/cones/smooth_cross_field.h"
 #include "libquadmesh/core/error.h"
 
 #include <Eigen/Geometry>
@@ -380,7 +381,8 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
                             "{:.0f} cones allowed (max({:g}, {:g}% of the quads)): a ragged boundary",
                             cones.size(), options.corner_angle_deg, allowed, options.max_interior_cones,
                             100 * options.max_interior_cone_share));
-  if (deficit == 0 && !(options.pair_band_goal > 0)) return cones;
+  const bool greedy = options.interior == InteriorCones::greedy;
+  if (greedy && deficit == 0 && !(options.pair_band_goal > 0)) return cones;
 
   const std::vector<double> curvature = vertex_curvature(soup, adjacency);
   if (std::abs(deficit) > allowed)
@@ -403,6 +405,25 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
   const double spacing = options.cone_spacing * size;
   const bool several_loops = adjacency.boundary_loops.size() > 1;
   const LoopTurns model = several_loops ? loop_turns(soup, adjacency, solver) : LoopTurns{};
+  if (!greedy) {
+    // the field's singularities, all at once; they carry what the corners leave
+    // when the field meets every corner as corner_cones counts it
+    CrossFieldOptions field_options;
+    field_options.length = size;
+    const std::vector<Cone> singular = field_singularities(smooth_cross_field(soup, adjacency, field_options));
+    int carried = 0;
+    for (const Cone& c : singular) carried += 4 - c.quads;
+    if (carried != deficit)
+      throw Error(ErrorCode::unsupported,
+                  fmt::format("the cross field's {} singularities carry {} quarter turns where the {} corners leave {}",
+                              singular.size(), carried, cones.size(), deficit));
+    if (static_cast<double>(singular.size()) > allowed)
+      throw Error(ErrorCode::unsupported,
+                  fmt::format("the cross field has {} singularities, more than the {:.0f} cones allowed",
+                              singular.size(), allowed));
+    cones.insert(cones.end(), singular.begin(), singular.end());
+    deficit = 0;
+  }
   while (deficit != 0) {
     // the cones so far, the rest spread over the interior by area
     const std::vector<int> quads = quads_per_vertex(adjacency, cones);
@@ -449,7 +470,7 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
     if (several_loops)
       align_loops_by_cones(soup, adjacency, model, curvature, eligible, options.alignment_rings,
                            options.cone_separation, set);
-    if (options.size_relaxation_passes > 0) {
+    if (greedy && options.size_relaxation_passes > 0) {
       relax_cones_for_size(soup, adjacency, solver, model, curvature, area, eligible, options.cone_separation,
                            options.size_relaxation_passes, options.relaxation_alignment_slack, set);
       if (several_loops)
@@ -458,7 +479,7 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
     }
   };
   settle(cones);
-  if (options.pair_band_goal > 0) {
+  if (greedy && options.pair_band_goal > 0) {
     const int interior = static_cast<int>(cones.size() - corner_count);
     add_cone_pairs(soup, adjacency, solver, curvature, area, eligible, spacing, settle, options,
                    static_cast<int>(allowed) - interior, cones);

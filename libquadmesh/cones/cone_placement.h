@@ -25,7 +25,17 @@
 
 namespace qm {
 
+/// Where the interior cones come from.
+enum class InteriorCones {
+  greedy,       ///< one at a time at the extremes of the conformal factor (above)
+  /// the singularities of the smoothest boundary-aligned cross field
+  /// (smooth_cross_field.h), moved only to align the loops: no pairs, no size
+  /// relaxation (the classical route, measured against the greedy one)
+  cross_field,
+};
+
 struct ConePlacementOptions {
+  InteriorCones interior = InteriorCones::greedy;
   /// A boundary vertex counts as a corner when its angle differs from pi by more
   /// than this (degrees): 45 puts the change of quad count half-way between.
   double corner_angle_deg = 45.0;

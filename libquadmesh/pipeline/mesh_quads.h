@@ -36,10 +36,17 @@ enum class Singularities {
   automatic,  ///< as abel; where its quads miss the size band, quarter-turn cones
 };
 
+/// Where `automatic` puts its interior cones (cone_placement.h InteriorCones).
+enum class ConePlacement {
+  greedy,       ///< on the conformal factor, one at a time [Ben-Chen et al. 2008]
+  cross_field,  ///< the smoothest boundary-aligned cross field's singularities
+};
+
 struct QuadMeshOptions {
   RemeshPolicy remesh = RemeshPolicy::automatic;
   /// abel by default until the cone route meets issue 18's acceptance everywhere.
   Singularities singularities = Singularities::abel;
+  ConePlacement cone_placement = ConePlacement::greedy;
   double remesh_size = 0.0;  ///< target edge length of the remeshing; 0: min(0.4 x mean edge, size / 3)
   /// Which h: -1 "auto" (the most uniform |h|, param/form_choice.h), k >= 0 the
   /// k-th symmetric basis form; `coefficients` (when not empty) wins over both.

@@ -332,6 +332,33 @@ TEST_CASE("placed cones on a plate with two holes: one quad per corner, eight va
   check_cone_quads(q, cones);
 }
 
+TEST_CASE("the cross-field placement on a plate with two holes: the field's singularities carry the -8 quarter turns, "
+          "complete quads" * doctest::test_suite("slow")) {
+  io::ReadOptions read;
+  read.quad_size = 1.75;
+  const TriangleSoup soup = io::read_surface(test::example("plate-two-holes.geo"), read).soup;
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  ConePlacementOptions options;
+  options.interior = InteriorCones::cross_field;
+  const std::vector<Cone> cones = place_cones(soup, adjacency, 1.75, options);
+  int corners = 0, interior_turns = 0, interior = 0;
+  for (const Cone& c : cones) {
+    if (adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)]) {
+      corners += c.quads == 1;
+      continue;
+    }
+    ++interior;
+    interior_turns += 4 - c.quads;
+  }
+  CHECK(corners == 4);
+  CHECK(interior_turns == -8);
+  const ConeMap m = cone_map(soup, adjacency, cones, 1.75);
+  CHECK(m.report.inverted_triangles == 0);
+  const LatticeQuads q = complete_quads(soup, adjacency, m.map);
+  CHECK(euler_and_singular(q) == std::pair{-1, interior});
+  check_cone_quads(q, cones);
+}
+
 TEST_CASE("a T-plate: cones placed farther from the boundary and apart map without folds, corners right" *
           doctest::test_suite("slow")) {
   // examples/t-plate-two-holes.geo: six convex and two concave corners, chi = -1:

@@ -530,6 +530,41 @@ TEST_CASE("mesh --singularities auto: a plate whose corners get two quads each f
   CHECK(q["hausdorff_rel"].get<double>() <= criteria["max_hausdorff_relative"].get<double>());
 }
 
+TEST_CASE("mesh --cone-placement cross-field: the smoothest cross field's singularities as the interior cones, "
+          "reported as such") {
+  const std::string dir = test::scratch_dir("cli_cone_placement");
+  const std::string output = dir + "/out.msh", report = dir + "/report.json";
+  const Run run = quadmesh("mesh " + quoted(test::example("l-plate-long-arm.geo")) + " -o " + quoted(output) +
+                           " --size 1.5% --singularities auto --cone-placement cross-field -q --report " +
+                           quoted(report));
+  REQUIRE(run.status == 0);
+  const auto j = nlohmann::json::parse(slurp(report));
+  const auto& s = j["singularities"];
+  CHECK(s["route"] == "cones");
+  CHECK(s["cone_placement"] == "cross-field");
+  // five convex corners and the concave one leave 4 chi - 5 + 1 = -4 quarter turns inside
+  int turns = 0, interior = 0;
+  for (const auto& c : s["cones"]) {
+    if (c["on_boundary"].get<bool>()) continue;
+    ++interior;
+    turns += 4 - c["quads"].get<int>();
+    CHECK(c["reason"] == "a singularity of the smoothest boundary-aligned cross field");
+  }
+  CHECK(turns == -4);
+  const auto& q = j["quality"];
+  CHECK(q["euler_characteristic"] == 0);
+  CHECK(q["inverted"] == 0);
+  CHECK(q["irregular_interior"] == interior);
+  CHECK(q["corners"]["convex_wrong"] == 0);
+  CHECK(q["corners"]["concave_wrong"] == 0);
+  CHECK(q["size_band_share"].get<double>() >= 0.9);
+  // an unknown placement is refused by the parser
+  const Run bad = quadmesh("mesh " + quoted(test::example("l-plate-long-arm.geo")) + " -o " + quoted(dir + "/x.msh") +
+                           " --cone-placement spiral");
+  CHECK(bad.status != 0);
+  CHECK(!std::filesystem::exists(dir + "/x.msh"));
+}
+
 TEST_CASE("mesh --singularities auto: a T-plate the Abel route folds meshes with cones, every corner right" *
           doctest::test_suite("slow")) {
   const std::string dir = test::scratch_dir("cli_singularities_t");

@@ -270,6 +270,8 @@ QuadMeshOptions quad_mesh_options(const MeshOptions& options) {
   mesher.coefficients = options.coefficients;
   mesher.rotate = options.rotate;
   mesher.singularities = options.singularities == "auto" ? Singularities::automatic : Singularities::abel;
+  mesher.cone_placement =
+      options.cone_placement == "cross-field" ? ConePlacement::cross_field : ConePlacement::greedy;
   mesher.smoothing = !options.no_smoothing;
   mesher.coarsen = !options.no_coarsening;
   mesher.size = options.size;

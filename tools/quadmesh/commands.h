@@ -35,6 +35,7 @@ struct MeshOptions {
   std::vector<double> coefficients;  ///< --coeffs
   bool rotate = false;
   std::string singularities = "abel";  ///< abel | auto (QuadMeshOptions::singularities)
+  std::string cone_placement = "greedy";  ///< greedy | cross-field (QuadMeshOptions::cone_placement)
   bool no_smoothing = false;            ///< --no-smoothing
   bool no_coarsening = false;           ///< --no-coarsening
   double corner_angle_deg = 30.0;

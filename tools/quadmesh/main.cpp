@@ -172,6 +172,12 @@ int run(int argc, char** argv) {
                    "[0.5, 2] x the size")
       ->check(CLI::IsMember({"abel", "auto"}))
       ->capture_default_str();
+  mesh_cmd
+      ->add_option("--cone-placement", mesh.cone_placement,
+                   "With auto, where the interior cones go: greedy (at the extremes of the conformal factor) or "
+                   "cross-field (the smoothest boundary-aligned cross field's singularities)")
+      ->check(CLI::IsMember({"greedy", "cross-field"}))
+      ->capture_default_str();
   mesh_cmd->add_flag("--no-coarsening", mesh.no_coarsening,
                      "Mesh the input's own triangles even where they are far finer than the quads need "
                      "(by default a working triangulation of the input's points, edges a third of the size)");

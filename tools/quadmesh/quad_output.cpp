@@ -203,17 +203,20 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
   }
   j["zeros"] = zeros;
   Json cones = Json::array();
+  const char* interior_reason = options.cone_placement == "cross-field"
+                                    ? "a singularity of the smoothest boundary-aligned cross field"
+                                    : "Gauss-Bonnet: the quarter turns the corners leave to the inside";
   for (const Cone& c : result.cones) {
     const Vec3& p = result.surface.points[static_cast<std::size_t>(c.vertex)];
     const bool boundary = on_boundary[static_cast<std::size_t>(c.vertex)];
     cones.push_back({{"position", {p.x(), p.y(), p.z()}},
                      {"quads", c.quads},
                      {"on_boundary", boundary},
-                     {"reason", boundary ? "corner: one quad per 90 degrees of its angle"
-                                         : "Gauss-Bonnet: the quarter turns the corners leave to the inside"}});
+                     {"reason", boundary ? "corner: one quad per 90 degrees of its angle" : interior_reason}});
   }
   const auto share = [](double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); };
   j["singularities"] = {{"mode", options.singularities},
+                        {"cone_placement", options.cone_placement},
                         {"route", result.singularities},
                         {"cones", cones},
                         {"size_band", {{"low", size_band_low}, {"high", size_band_high}}},

@@ -17,28 +17,32 @@
 
 namespace qm {
 
-std::vector<ConePlacementOptions> cone_placements() {
-  ConePlacementOptions no_pairs;
+std::vector<ConePlacementOptions> cone_placements(InteriorCones interior) {
+  ConePlacementOptions first;
+  first.interior = interior;
+  ConePlacementOptions no_pairs = first;
   no_pairs.pair_band_goal = 0;
-  ConePlacementOptions wider;
+  ConePlacementOptions wider = first;
   wider.boundary_distance = 2.5;
   wider.cone_spacing = 3.0;
-  ConePlacementOptions widest;
+  ConePlacementOptions widest = first;
   widest.boundary_distance = 3.0;
   widest.cone_spacing = 3.5;
-  return {ConePlacementOptions{}, no_pairs, wider, widest};
+  return {first, no_pairs, wider, widest};
 }
 
 Candidate cone_attempt(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages,
-                       std::vector<std::vector<Cone>>& placed, double lattice_scale) {
+                       std::vector<std::vector<Cone>>& placed, double lattice_factor) {
   QuadMeshResult r = setup.preamble;
   const TriangleSoup& soup = setup.soup;
-  const double size = setup.preamble.size_requested * lattice_scale;
+  const double size = setup.preamble.size_requested * lattice_factor;
   const SurfaceAdjacency adjacency = surface_adjacency(soup);
   stages.next("cone_placement",
-              fmt::format("placing quarter-turn cones (corners, then the interior, {:g} quads from the boundary and "
-                          "{:g} apart)",
-                          placement.boundary_distance, placement.cone_spacing));
+              placement.interior == InteriorCones::cross_field
+                  ? std::string("placing quarter-turn cones (corners, then the smoothest cross field's singularities)")
+                  : fmt::format("placing quarter-turn cones (corners, then the interior, {:g} quads from the boundary "
+                                "and {:g} apart)",
+                                placement.boundary_distance, placement.cone_spacing));
   r.cones = place_cones(soup, adjacency, size, placement);
   const auto same = [&](const std::vector<Cone>& other) {
     return std::equal(other.begin(), other.end(), r.cones.begin(), r.cones.end(),
@@ -145,20 +149,22 @@ constexpr double finer_lattices[] = {0.95, 0.9};
 constexpr int max_finer_attempts = 6;
 constexpr double finer_lattice_below = 1.1;
 
-/// The first placement of cone_placements() whose quads at `lattice_scale` are
+/// The first placement of cone_placements() whose quads at `lattice_factor` are
 /// sound, each placement one of `attempts_left` (counted down, a thrown one too).
 /// When none is sound: the last that gave quads, measured; nothing when every one
 /// threw (`failure` then says why the first did).
 std::optional<ConeCandidate> first_sound_placement(const FormSetup& setup, const QuadMeshOptions& options,
-                                                   SurfaceTopology input, Stages& stages, double lattice_scale,
+                                                   SurfaceTopology input, Stages& stages, double lattice_factor,
                                                    int& attempts_left, std::string& failure) {
   std::optional<Candidate> last;
   std::vector<std::vector<Cone>> placed;
-  for (const ConePlacementOptions& placement : cone_placements()) {
+  const InteriorCones interior = options.cone_placement == ConePlacement::cross_field ? InteriorCones::cross_field
+                                                                                     : InteriorCones::greedy;
+  for (const ConePlacementOptions& placement : cone_placements(interior)) {
     if (attempts_left == 0) break;
     --attempts_left;
     try {
-      last = cone_attempt(setup, placement, stages, placed, lattice_scale);
+      last = cone_attempt(setup, placement, stages, placed, lattice_factor);
     } catch (const Error& e) {
       if (failure.empty()) failure = e.what();
       continue;

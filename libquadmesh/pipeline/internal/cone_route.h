@@ -21,20 +21,20 @@ namespace qm {
 constexpr double size_band_goal = 0.9;
 
 /// Meshes `setup.soup` by the cone route at the requested quad edge times
-/// `lattice_scale` (the quality still measured against the requested one): the result
+/// `lattice_factor` (the quality still measured against the requested one): the result
 /// (the preamble's fields, surface, quads, boundary loops of the points, cones,
 /// extraction) measured once.
 /// Throws qm::Error when a stage cannot be done (a boundary loop the field cannot
 /// meet, a failed solve), or when the cones placed are a set in `placed` (tried
 /// before); else adds them there.
 Candidate cone_attempt(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages,
-                       std::vector<std::vector<Cone>>& placed, double lattice_scale = 1.0);
+                       std::vector<std::vector<Cone>>& placed, double lattice_factor = 1.0);
 
 /// The cone placements the route tries in turn, until one gives sound quads: the
 /// defaults, then without the valence-3/5 pairs that even the sizes (more cones,
 /// more places to fold), then interior cones farther from the boundary and from
 /// each other (cramped cones fold the map between them and the boundary).
-std::vector<ConePlacementOptions> cone_placements();
+std::vector<ConePlacementOptions> cone_placements(InteriorCones interior = InteriorCones::greedy);
 
 /// Sound: quads with the input's topology, no inverted or flipped quad, no dropped
 /// cell, no stray boundary point.
