@@ -107,7 +107,7 @@ struct QuadMeshResult {
   double uniformity = 0;         ///< R(c) of form_choice.h (1 = uniform |h|)
   double scale = 0;              ///< s: the grid is the integer lattice of s h
   double size = 0;               ///< the target edge length that s implies
-  double size_requested = 0;
+  double size_requested = 0;     ///< the quad edge asked for: QuadMeshOptions::size (or its default), or with QuadMeshOptions::quads the edge of a square of area / quads
   double expected_quads = 0;     ///< area / size^2
   MapZeros zeros;                ///< of s h before quantization
   std::vector<ZeroVertex> zero_vertices;  ///< the zeros placed at vertices of `surface`, then the sharp corners

@@ -122,6 +122,28 @@ TEST_CASE("singularities auto on an annulus: the Abel quads are in the size band
   for (std::size_t p = 0; p < abel.quads.points.size(); ++p) CHECK(automatic.quads.points[p] == abel.quads.points[p]);
 }
 
+TEST_CASE("singularities auto with a quad count: the size band and the cones measured against area / quads") {
+  // the annulus at 400 quads: its Abel quads are in the band of that size, so auto
+  // keeps them (measured against the default size, 1/60 of the diagonal, they were
+  // not, and the cone route made 1078 quads)
+  const TriangleSoup ring = test::annulus(1.0, 2.0, 12, 96);
+  QuadMeshOptions options;
+  options.quads = 400;
+  options.singularities = Singularities::automatic;
+  const QuadMeshResult r = mesh_quads(ring, options);
+  CHECK(r.singularities == "abel");
+  CHECK(std::abs(static_cast<double>(r.quads.quads.size()) - 400.0) <= 0.15 * 400);
+  // a long L-arm's corners take the cone route: its quads also number about 500
+  // (they were 1.4 x as many on the plate with two holes)
+  io::ReadOptions read;
+  read.quad_size = 2.0;
+  const TriangleSoup arm = io::read_surface(test::example("l-plate-long-arm.geo"), read).soup;
+  options.quads = 500;
+  const QuadMeshResult cones = mesh_quads(arm, options);
+  CHECK(cones.singularities == "cones");
+  CHECK(std::abs(static_cast<double>(cones.quads.quads.size()) - 500.0) <= 0.15 * 500);
+}
+
 TEST_CASE("annulus: a singularity-free grid, integer periods, boundaries on integer levels") {
   const TriangleSoup soup = test::annulus(1.0, 2.0, 12, 96);
   QuadMeshOptions options;

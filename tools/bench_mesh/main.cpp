@@ -1,4 +1,4 @@
-// bench_mesh: stage times of the whole quad-meshing job (`quadmesh mesh` without
+// bench_mesh: stage times of the whole quad-meshing job (`quadmesh mesh --singularities abel` without
 // reading and writing), as ratios against its forms stage measured in the same
 // run (issue 4: the whole mesh stage within about 3x of the forms stage).
 //
@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
     qm::require_supported(surface);
     qm::QuadMeshOptions options;
     options.size_relative = percent / 100.0;
+    options.singularities = qm::Singularities::abel;  // the baseline: the seed's method
     const auto start = std::chrono::steady_clock::now();
     const qm::QuadMeshResult r = qm::mesh_quads(surface.soup, options);
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

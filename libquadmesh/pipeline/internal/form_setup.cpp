@@ -103,7 +103,7 @@ FormSetup prepare_forms(TriangleSoup soup, const QuadMeshOptions& options, Stage
   setup.area = surface_area(soup);
   setup.diagonal = bounding_box_diagonal(soup.points, soup.triangles);
   const RequestedSize requested = requested_size(soup, options);
-  r.size_requested = requested.size;
+  r.size_requested = requested.edge;  // with a quad count, the edge of a square of area / quads
   auto remesh = [&](TriangleSoup& s) {
     RemeshOptions remesh_options;
     remesh_options.target_edge_length =
