@@ -14,7 +14,9 @@
 // edge hold the cross along that edge (the longest when two); E is minimized over
 // the others: one sparse Hermitian solve. (Knoeppel et al.'s eigenproblem is the
 // field with no alignment; with the boundary held it is this linear system, so no
-// eigensolver is used.)
+// eigensolver is used.) The minimizer's |psi| sags and merges singularities (a
+// disk's four into one of index 1): steps of diffusion over the quad size, each
+// after making the crosses unit, spread them again (CrossFieldOptions).
 //
 // The index at an inner vertex: going around it through its triangles, the jumps
 // arg(psi_g / (e^(4 i t_fg) psi_f)) add up, with 4 times the angle defect (the

@@ -33,7 +33,8 @@ Candidate cone_attempt(const FormSetup& setup, const ConePlacementOptions& place
 /// The cone placements the route tries in turn, until one gives sound quads: the
 /// defaults, then without the valence-3/5 pairs that even the sizes (more cones,
 /// more places to fold), then interior cones farther from the boundary and from
-/// each other (cramped cones fold the map between them and the boundary).
+/// each other (cramped cones fold the map between them and the boundary); every
+/// one with its interior cones from `interior`.
 std::vector<ConePlacementOptions> cone_placements(InteriorCones interior = InteriorCones::greedy);
 
 /// Sound: quads with the input's topology, no inverted or flipped quad, no dropped
@@ -50,6 +51,12 @@ std::string unsound_reason(const CandidateQuality& c, SurfaceTopology input);
 bool cones_replace(const CandidateQuality& cones, double cones_band, double abel_band, std::size_t cones_corners,
                    std::size_t abel_corners, SurfaceTopology input, const AcceptanceCriteria& criteria);
 
+/// A cone candidate with its quads' size band (measured once).
+struct ConeCandidate {
+  Candidate candidate;
+  SizeBand band;
+};
+
 /// Singularities::automatic: when `best` (the Abel result) has fewer than
 /// size_band_goal of its quads in the size band, or none, or a CAD corner with
 /// another quad count than one per 90 degrees, meshes by the cone route
@@ -64,11 +71,6 @@ bool cones_replace(const CandidateQuality& cones, double cones_band, double abel
 /// lies within the Hausdorff criterion, else it is `tried` (for
 /// try_cones_if_off_band to weigh against the Abel quads), or `failure` says why
 /// there is none.
-/// A cone candidate with its quads' size band (measured once).
-struct ConeCandidate {
-  Candidate candidate;
-  SizeBand band;
-};
 struct ConesFirst {
   std::optional<Candidate> kept;
   std::optional<ConeCandidate> tried;
