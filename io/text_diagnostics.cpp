@@ -164,7 +164,7 @@ std::optional<std::string> diagnose_off(const std::string& path) {
       return fmt::format("{}: the file ends after {} of {} faces (truncated?)", path, f, nf);
     tokens = split_tokens(line);
     long k = 0;
-    if (!parse_integer(tokens[0], k) || k < 3 || static_cast<long>(tokens.size()) < k + 1)
+    if (!parse_integer(tokens[0], k) || k < 3 || k >= static_cast<long>(tokens.size()))  // no k + 1: k may be LONG_MAX
       return fmt::format("{}: line {}: expected a face 'n i1 ... in' with n >= 3", path, line_no);
     for (long i = 1; i <= k; ++i) {
       long index = 0;

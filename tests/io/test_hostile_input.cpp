@@ -324,6 +324,15 @@ TEST_CASE("defect 1: only regular files are read, and text formats must be text"
           "long.off: line 2: not text (a line over 1 MiB)");
 }
 
+TEST_CASE("an OFF face whose vertex count overflows a long is refused, named by its line (a fuzz finding)") {
+  const std::string dir = test::scratch_dir("hostile_off_face_count");
+  // the count saturates at LONG_MAX; checking for its indices by count + 1 overflowed
+  refused(write_bytes(dir, "huge-face.off",
+                      "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n" + std::string("3") +
+                          std::string(36, '0') + " 0 2 3\n"),
+          "huge-face.off: line 8: expected a face 'n i1 ... in' with n >= 3");
+}
+
 TEST_CASE("defect 2: a PLY header is checked line by line before CGAL reads it") {
   const std::string dir = test::scratch_dir("hostile_ply_header");
   const std::string body = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
