@@ -44,8 +44,9 @@ enum class ConePlacement {
 
 struct QuadMeshOptions {
   RemeshPolicy remesh = RemeshPolicy::automatic;
-  /// abel by default until the cone route meets issue 18's acceptance everywhere.
-  Singularities singularities = Singularities::abel;
+  /// automatic by default: where the Abel quads meet the size band and the
+  /// corners' quad counts (or the cones fold), they are the result unchanged.
+  Singularities singularities = Singularities::automatic;
   ConePlacement cone_placement = ConePlacement::greedy;
   double remesh_size = 0.0;  ///< target edge length of the remeshing; 0: min(0.4 x mean edge, size / 3)
   /// Which h: -1 "auto" (the most uniform |h|, param/form_choice.h), k >= 0 the

@@ -36,6 +36,14 @@ TriangleSoup analysed(const std::string& path, double quad_size_relative = 0) {
   return analyze_topology(io::read_surface(path, read).soup).soup;
 }
 
+/// The options of the seed's method (Singularities::abel): what these tests check
+/// is the Abel differential's quantization, zeros and refinement.
+QuadMeshOptions abel_options() {
+  QuadMeshOptions options;
+  options.singularities = Singularities::abel;
+  return options;
+}
+
 /// Valence (number of quads) of every quad-mesh point.
 std::vector<int> quads_at(const LatticeQuads& q) {
   std::vector<int> count(q.points.size(), 0);
@@ -88,7 +96,7 @@ TEST_CASE("the quads and their quality are the same bit for bit on one worker th
   auto run = [&](std::size_t threads) {
     const ThreadLimit limit(threads);
     CHECK(worker_threads() == threads);
-    QuadMeshResult r = mesh_quads(input, QuadMeshOptions{});
+    QuadMeshResult r = mesh_quads(input, QuadMeshOptions{});  // the default: auto, the cone route here
     const QuadQuality q = quad_quality(polygon_mesh(r.quads), &input);
     return std::make_pair(std::move(r), q);
   };
@@ -108,7 +116,7 @@ TEST_CASE("the quads and their quality are the same bit for bit on one worker th
 TEST_CASE("singularities auto on an annulus: the Abel quads are in the size band, so auto gives exactly them") {
   // quad size grows like r from the inner circle to the outer: within 2/3 to 4/3 of the mean
   const TriangleSoup soup = test::annulus(1.0, 2.0, 24, 192);
-  QuadMeshOptions options;
+  QuadMeshOptions options = abel_options();
   options.size = 0.12;
   const QuadMeshResult abel = mesh_quads(soup, options);
   options.singularities = Singularities::automatic;
@@ -127,7 +135,7 @@ TEST_CASE("singularities auto with a quad count: the size band and the cones mea
   // keeps them (measured against the default size, 1/60 of the diagonal, they were
   // not, and the cone route made 1078 quads)
   const TriangleSoup ring = test::annulus(1.0, 2.0, 12, 96);
-  QuadMeshOptions options;
+  QuadMeshOptions options = abel_options();
   options.quads = 400;
   options.singularities = Singularities::automatic;
   const QuadMeshResult r = mesh_quads(ring, options);
@@ -146,7 +154,7 @@ TEST_CASE("singularities auto with a quad count: the size band and the cones mea
 
 TEST_CASE("annulus: a singularity-free grid, integer periods, boundaries on integer levels") {
   const TriangleSoup soup = test::annulus(1.0, 2.0, 12, 96);
-  QuadMeshOptions options;
+  QuadMeshOptions options = abel_options();
   options.quads = 400;
   const QuadMeshResult r = mesh_quads(soup, options);
   CHECK(r.zero_vertices.empty());
@@ -180,7 +188,7 @@ TEST_CASE("annulus: a singularity-free grid, integer periods, boundaries on inte
 TEST_CASE("plate with two holes (CAD): one interior zero, corners on the lattice" *
           doctest::test_suite("slow")) {
   const TriangleSoup input = analysed(test::example("plate-two-holes.geo"));
-  const QuadMeshResult r = mesh_quads(input, {});
+  const QuadMeshResult r = mesh_quads(input, abel_options());
   check_result(input, r, -1, 3);
   CHECK(r.quantization.corners == 4);
   CHECK(r.quantization.lattice_zeros == r.zero_vertices.size() - 4);
@@ -202,7 +210,7 @@ TEST_CASE("plate with two holes (CAD): one interior zero, corners on the lattice
 TEST_CASE("curved shell with two holes (CAD): two boundary zeros on the small hole kept apart, no fold left" *
           doctest::test_suite("slow")) {
   const TriangleSoup input = analysed(test::example("curved-shell-holes.geo"));
-  QuadMeshOptions options;
+  QuadMeshOptions options = abel_options();
   options.size_relative = 0.015;
   const QuadMeshResult r = mesh_quads(input, options);
   check_result(input, r, -1, 3);
@@ -259,7 +267,7 @@ TEST_CASE("CAD plates that had gaps: branch points off the lattice, overlapping 
   for (const Plate& plate : plates) {
     CAPTURE(plate.name);
     const TriangleSoup input = analysed(test::write_text(dir, std::string(plate.name) + ".geo", plate.geo), 0.015);
-    QuadMeshOptions options;
+    QuadMeshOptions options = abel_options();
     options.size_relative = 0.015;
     const QuadMeshResult r = mesh_quads(input, options);
     CHECK((r.branch_points.snapped >= 1) == plate.branch_point_moved);
@@ -280,7 +288,7 @@ TEST_CASE("two boundary zeros of a hole beside a narrow part stay on distinct la
   // Hausdorff 1.5%)
   const std::string dir = test::scratch_dir("mesh_boundary_zero_pair");
   const TriangleSoup input = analysed(test::write_text(dir, "p7.geo", test::edge_hole_plate_geo()), 0.015);
-  QuadMeshOptions options;
+  QuadMeshOptions options = abel_options();
   options.size_relative = 0.015;
   const QuadMeshResult r = mesh_quads(input, options);
   check_result(input, r, -5, 7);
@@ -306,7 +314,7 @@ TEST_CASE("a plate whose first rounding leaves folds is rounded again at a nearb
   // none.
   const std::string dir = test::scratch_dir("mesh_rounding_retry");
   const TriangleSoup input = analysed(test::write_text(dir, "five-holes.geo", test::five_hole_plate_geo()), 0.015);
-  QuadMeshOptions options;
+  QuadMeshOptions options = abel_options();
   options.size_relative = 0.015;
   const QuadMeshResult r = mesh_quads(input, options);
   CHECK(r.rounding_attempts >= 1);
@@ -321,7 +329,7 @@ TEST_CASE("a plate whose first rounding leaves folds is rounded again at a nearb
 TEST_CASE("pig: the folds near its cones are untangled, the extraction drops no cell" *
           doctest::test_suite("slow")) {
   const TriangleSoup input = analysed(test::shared_mesh("pig.off"));
-  QuadMeshOptions options;
+  QuadMeshOptions options = abel_options();
   options.size_relative = 0.015;
   options.max_deviation = -1;
   options.split_long_edges = false;  // the input's own folds
@@ -357,7 +365,7 @@ TEST_CASE("flatmesh: triangles wider than the quads are split, and the better of
   // linear map per triangle across several quads, mean angle deviation 5.28 degrees
   // as the extraction leaves it (no smoothing), 4.84 on the split triangulation
   const TriangleSoup input = analysed(test::shared_mesh("flatmesh.off"));
-  QuadMeshOptions options;
+  QuadMeshOptions options = abel_options();
   options.size_relative = 0.015;
   options.smoothing = false;
   const QuadMeshResult r = mesh_quads(input, options);
@@ -377,7 +385,7 @@ TEST_CASE("flatmesh: triangles wider than the quads are split, and the better of
 
 TEST_CASE("kitten with two holes: genus 1, two zeros of order 1" * doctest::test_suite("slow")) {
   const TriangleSoup input = analysed(test::shared_mesh("kitten-2holes.obj"));
-  QuadMeshOptions options;
+  QuadMeshOptions options = abel_options();
   options.size_relative = 0.015;
   const QuadMeshResult r = mesh_quads(input, options);
   check_result(input, r, -2, 2);
@@ -388,7 +396,7 @@ TEST_CASE("fertility: corners moved onto its extremities bring the quads within 
           doctest::test_suite("slow")) {
   const TriangleSoup input = analysed(test::shared_mesh("fertility-3holes.obj"));
   const double diagonal = bounding_box_diagonal(input.points, input.triangles);
-  QuadMeshOptions options;
+  QuadMeshOptions options = abel_options();
   options.size_relative = 0.015;
   const QuadMeshResult r = mesh_quads(input, options);
   check_result(input, r, -9, 3);
@@ -404,7 +412,7 @@ TEST_CASE("aqua-center: splitting chords brings the quads within the tolerance, 
           doctest::test_suite("slow")) {
   const TriangleSoup input = analysed(test::shared_mesh("aqua-center.off"));
   const double diagonal = bounding_box_diagonal(input.points, input.triangles);
-  QuadMeshOptions options;
+  QuadMeshOptions options = abel_options();
   options.size_relative = 0.015;
   options.max_deviation = -1;  // off
   const QuadMeshResult plain = mesh_quads(input, options);
@@ -436,7 +444,7 @@ TEST_CASE("bunny at 1.5%: smoothing the worst quads lifts the minimum scaled Jac
           doctest::test_suite("slow")) {
   // a boundary quad at a hole rim that zigzags in the scan, and quads beside it
   const TriangleSoup input = analysed(test::shared_mesh("bunny-open.obj"));
-  QuadMeshOptions options;
+  QuadMeshOptions options = abel_options();
   options.size_relative = 0.015;
   const QuadMeshResult r = mesh_quads(input, options);
   CHECK(r.smoothing.min_before < AcceptanceCriteria{}.min_scaled_jacobian);
@@ -463,7 +471,7 @@ TEST_CASE("chord refinement never turns a quad over: a round that would is undon
   // undone and others go ahead (this was 2.5% until close boundary zeros of one
   // loop were kept apart, which changed the bunny's rounding)
   const TriangleSoup input = analysed(test::shared_mesh("bunny-open.obj"));
-  QuadMeshOptions options;
+  QuadMeshOptions options = abel_options();
   options.size_relative = 0.02;
   const QuadMeshResult r = mesh_quads(input, options);
   const QuadQuality q = quad_quality(polygon_mesh(r.quads), nullptr);
@@ -476,7 +484,7 @@ TEST_CASE("chord refinement never turns a quad over: a round that would is undon
 
 TEST_CASE("--form, --coeffs and --rotate choose the differential") {
   const TriangleSoup soup = test::annulus(1.0, 2.0, 8, 64);
-  QuadMeshOptions plain;
+  QuadMeshOptions plain = abel_options();
   plain.quads = 200;
   QuadMeshOptions rotated = plain;
   rotated.rotate = true;
@@ -491,10 +499,10 @@ TEST_CASE("--form, --coeffs and --rotate choose the differential") {
   coeffs.coefficients = {2.0};
   CHECK(mesh_quads(soup, first).coefficients[0] == doctest::Approx(1.0));
   CHECK(mesh_quads(soup, coeffs).quads.quads.size() == a.quads.quads.size());
-  QuadMeshOptions wrong;
+  QuadMeshOptions wrong = abel_options();
   wrong.coefficients = {1.0, 2.0};
   CHECK_THROWS_AS(mesh_quads(soup, wrong), Error);
-  QuadMeshOptions bad_form;
+  QuadMeshOptions bad_form = abel_options();
   bad_form.form = 3;
   CHECK_THROWS_AS(mesh_quads(soup, bad_form), Error);
 }

@@ -4,6 +4,7 @@
 #include "tests/support/test_meshes.h"
 
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
 #include <cstdlib>
 #include <nlohmann/json.hpp>
@@ -110,7 +111,10 @@ void expect_quad_mesh(const std::string& input, const std::string& size, int chi
   CHECK(q["angle_dev_mean"].get<double>() <= criteria["max_mean_angle_deviation_deg"].get<double>());
   const double quads = q["quads"].get<double>(), target = j["expected"]["quads"].get<double>();
   CHECK(std::abs(quads - target) <= 0.15 * target);
-  for (const char* key : {"forms", "quantization", "extraction", "total"}) CHECK(j["timings"].contains(key));
+  // the stages of the route kept: the Abel differential's quantization, or the cones' seamless map
+  const bool cones = j["singularities"]["route"] == "cones";
+  for (const char* key : {"forms", cones ? "cone_map" : "quantization", "extraction", "total"})
+    CHECK(j["timings"].contains(key));
   // the file read back by another command, with its physical groups
   const Run back = quadmesh("quality " + quoted(output) + " --json");
   REQUIRE(back.status == 0);
@@ -146,7 +150,8 @@ WrittenMesh mesh_geo(const std::string& dir, const std::string& geo, const std::
   return {run, std::filesystem::exists(report) ? nlohmann::json::parse(slurp(report)) : nlohmann::json()};
 }
 
-TEST_CASE("mesh: quads far from the input on a long end are written, with one warning line that names the place" *
+TEST_CASE("mesh --singularities abel: quads far from the input on a long end are written, with one warning line that "
+          "names the place" *
           doctest::test_suite("slow")) {
   // an L-plate whose arm is two widths long: the form decays along it, the quads at
   // its end are 20 times the size and 17% of the diagonal from it
@@ -156,7 +161,7 @@ TEST_CASE("mesh: quads far from the input on a long end are written, with one wa
       "BooleanDifference{ Surface{1}; Delete; }{ Surface{100}; Delete; }\n"
       "Disk(2) = {35.06, 10.41, 0, 4.16};\nDisk(3) = {32.09, 26.76, 0, 4.78};\n"
       "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:3}; Delete; }\n",
-      "1.5%");
+      "1.5%", " --singularities abel");
   const auto lines = m.run.error_lines();
   REQUIRE(lines.size() == 1);
   CHECK(lines[0].rfind("quadmesh: warning: the quads are up to ", 0) == 0);
@@ -179,7 +184,7 @@ TEST_CASE("mesh: inverted quads are written, with one warning line that names th
   const std::string dir = test::scratch_dir("cli_inverted");
   const std::string output = dir + "/out.msh";
   const Run run = quadmesh("mesh " + quoted(test::shared_mesh("bunny-open.obj")) + " -o " + quoted(output) +
-                           " --size 1.2% --max-deviation off --no-smoothing -q");
+                           " --size 1.2% --max-deviation off --no-smoothing --singularities abel -q");
   CHECK(run.status == 0);
   CHECK(std::filesystem::exists(output));
   // Verdict's inverted (a corner re-entrant against the quad's own normal) and
@@ -245,7 +250,8 @@ TEST_CASE("mesh: quads whose boundary strays from the input's are written with o
   CHECK(stray_lines == 1);
 }
 
-TEST_CASE("mesh: an L-bracket with a long arm fails fast, naming the long end (a limit of the method)" *
+TEST_CASE("mesh --singularities abel: an L-bracket with a long arm fails fast, naming the long end (the Abel "
+          "route's limit)" *
           doctest::test_suite("slow")) {
   // 200 x 40 with an arm 100 long and 20 wide: every symmetric form decays like
   // exp(-pi x / 20) along it. One basis form was almost 0 along a hole and was
@@ -256,7 +262,8 @@ TEST_CASE("mesh: an L-bracket with a long arm fails fast, naming the long end (a
   // on the CAD triangulation of before issue 21 (a third of the quad size: 1.5% of
   // the 204 diagonal / 3); on the default one the arm's quads conform, 19 times the
   // size, with a warning naming the long end (README Limits)
-  const Run run = quadmesh("mesh " + quoted(bracket) + " -o " + quoted(output) + " --size 1.5% --cad-mesh-size 1.02 -q");
+  const Run run = quadmesh("mesh " + quoted(bracket) + " -o " + quoted(output) +
+                           " --size 1.5% --cad-mesh-size 1.02 --singularities abel -q");
   CHECK(run.status == 1);
   const auto lines = run.error_lines();
   REQUIRE(lines.size() == 1);
@@ -570,7 +577,7 @@ TEST_CASE("mesh --singularities auto: a T-plate the Abel route folds meshes with
   const std::string dir = test::scratch_dir("cli_singularities_t");
   const std::string output = dir + "/out.msh", report = dir + "/report.json";
   const Run abel = quadmesh("mesh " + quoted(test::example("t-plate-two-holes.geo")) + " -o " + quoted(output) +
-                            " --size 1.5% -q");
+                            " --size 1.5% --singularities abel -q");
   CHECK(abel.status == 1);  // the web is a long end: the Abel quads fold there
   const Run run = quadmesh("mesh " + quoted(test::example("t-plate-two-holes.geo")) + " -o " + quoted(output) +
                            " --size 1.5% --singularities auto -q --report " + quoted(report));
@@ -623,6 +630,45 @@ TEST_CASE("mesh --singularities auto: kitten's coarse hole polygons get every co
   CHECK(q["hausdorff_rel"].get<double>() <= 0.01);
   CHECK(q["size_band_share"].get<double>() >= 0.9);
   CHECK(q["size_ratio_max"].get<double>() <= 3.0);
+}
+
+TEST_CASE("mesh by default (auto): where the cones do not help, the Abel quads with one warning line saying why" *
+          doctest::test_suite("slow")) {
+  // bunny-open's scanned holes have 102 boundary vertices more than 45 degrees
+  // from straight, more corner cones than max(24, 1% of the quads) allows
+  const std::string dir = test::scratch_dir("cli_default_fallback");
+  const std::string output = dir + "/out.msh", report = dir + "/report.json";
+  const Run run = quadmesh("mesh " + quoted(test::shared_mesh("bunny-open.obj")) + " -o " + quoted(output) +
+                           " --size 1.5% -q --report " + quoted(report));
+  REQUIRE(run.status == 0);
+  CHECK(std::filesystem::exists(output));
+  const auto j = nlohmann::json::parse(slurp(report));
+  CHECK(j["singularities"]["mode"] == "auto");
+  CHECK(j["singularities"]["route"] == "abel");
+  const std::string failure = j["singularities"]["cone_route_failure"].get<std::string>();
+  CHECK(failure.find("102 boundary vertices are corners") != std::string::npos);
+  int cone_lines = 0;
+  for (const std::string& line : run.error_lines()) {
+    if (line.find("quarter-turn cones did not help") == std::string::npos) continue;
+    ++cone_lines;
+    // what the Abel quads miss (every corner's quad count wrong, a quarter of them in the band), then why
+    const auto& q = j["quality"];
+    const int corners = q["corners"]["convex"].get<int>() + q["corners"]["concave"].get<int>() +
+                        q["corners"]["other"].get<int>();
+    CHECK(line.rfind(fmt::format("quadmesh: warning: the Abel quads put {} of the input's {} corners in the wrong "
+                                 "number of quads ({:.0f}% of them within [0.5, 2] x --size); quarter-turn cones did "
+                                 "not help: ",
+                                 corners, corners, 100 * j["singularities"]["abel_size_band_share"].get<double>()),
+                     0) == 0);
+    CHECK(line.find(failure + "; the Abel result is kept") != std::string::npos);
+  }
+  CHECK(cone_lines == 1);
+  // a differential chosen by hand (--form) is the Abel route: no cones tried, no such line
+  const Run form = quadmesh("mesh " + quoted(test::shared_mesh("bunny-open.obj")) + " -o " + quoted(output) +
+                            " --size 1.5% --form 1 -q --report " + quoted(report));
+  REQUIRE(form.status == 0);
+  CHECK(nlohmann::json::parse(slurp(report))["singularities"]["mode"] == "abel");
+  for (const std::string& line : form.error_lines()) CHECK(line.find("quarter-turn cones") == std::string::npos);
 }
 
 TEST_CASE("mesh: an input far finer than the quads is meshed on a working triangulation, measured against the input") {

@@ -84,8 +84,8 @@ std::vector<Method> comparison_methods(const MethodSetup& setup) {
   Method ours;
   ours.name = "quadmesh";
   ours.description = fmt::format(
-      "this program: `quadmesh mesh` at --size {:.6g} (symmetric holomorphic differentials, "
-      "quantized seamless parameterization)",
+      "this program: `quadmesh mesh` at --size {:.6g} (symmetric holomorphic differentials, quarter-turn cones "
+      "where their quads miss the size band or a corner's quad count, quantized seamless parameterization)",
       setup.size);
   ours.mesh_file = "quadmesh.msh";
   ours.argv = {setup.self,

@@ -285,12 +285,26 @@ QuadMeshOptions quad_mesh_options(const MeshOptions& options) {
   return mesher;
 }
 
+namespace {
+
+/// What the Abel quads miss that sends auto to the cones (cone_route.h): the size
+/// band, the corners' quad counts, or both.
+std::string abel_shortfall(const QuadQuality& q, double band_share) {
+  const std::size_t corners = q.corners_convex_wrong + q.corners_concave_wrong + q.corners_other_wrong;
+  const std::string band = fmt::format("{:.0f}% of them within [0.5, 2] x --size", 100 * band_share);
+  if (corners == 0) return "miss the size band (" + band + ")";
+  return fmt::format("put {} of the input's {} corners in the wrong number of quads ({})", corners,
+                     q.corners_convex + q.corners_concave + q.corners_other, band);
+}
+
+}  // namespace
+
 void warn_about_result(const MeshSummary& summary, const QuadMeshResult& result, double diagonal) {
   warn_if_cells_dropped(result);
   if (!result.cone_route_failure.empty())
-    fmt::print(stderr, "warning: the quads miss the size band [0.5, 2] x --size ({:.0f}% in it) and quarter-turn "
-                       "cones did not help: {}; the Abel result is kept\n",
-               100 * result.abel_size_band_share, result.cone_route_failure);
+    fmt::print(stderr, "quadmesh: warning: the Abel quads {}; quarter-turn cones did not help: {}; the Abel result "
+                       "is kept\n",
+               abel_shortfall(summary.quality, result.abel_size_band_share), result.cone_route_failure);
   warn_if_stray_boundary(result);
   warn_if_inverted(summary, result);
   warn_if_far(summary, result, diagonal);

@@ -34,7 +34,7 @@ struct MeshOptions {
   int form = -1;             ///< -1: auto; else the symmetric basis form (from 0)
   std::vector<double> coefficients;  ///< --coeffs
   bool rotate = false;
-  std::string singularities = "abel";  ///< abel | auto (QuadMeshOptions::singularities)
+  std::string singularities = "auto";  ///< abel | auto (QuadMeshOptions::singularities)
   std::string cone_placement = "greedy";  ///< greedy | cross-field (QuadMeshOptions::cone_placement)
   bool no_smoothing = false;            ///< --no-smoothing
   bool no_coarsening = false;           ///< --no-coarsening

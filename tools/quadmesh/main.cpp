@@ -169,7 +169,7 @@ int run(int argc, char** argv) {
   mesh_cmd
       ->add_option("--singularities", mesh.singularities,
                    "abel: the differential's zeros only; auto: quarter-turn cones where the Abel quads miss "
-                   "[0.5, 2] x the size")
+                   "[0.5, 2] x the size or a corner's quad count (abel when --form, --coeffs or --rotate is given)")
       ->check(CLI::IsMember({"abel", "auto"}))
       ->capture_default_str();
   mesh_cmd
@@ -331,6 +331,9 @@ int run(int argc, char** argv) {
     return run_render(render, common);
   }
   if (form_choice != "auto") mesh.form = std::stoi(form_choice) - 1;
+  // a differential chosen by hand asks for its quads: the Abel route, unless auto is named too
+  if (mesh_cmd->count("--singularities") == 0 && (mesh.form >= 0 || !mesh.coefficients.empty() || mesh.rotate))
+    mesh.singularities = "abel";
   set_length_or_percent(size_text, mesh.size, mesh.size_relative);
   if (deviation_text == "off")
     mesh.max_deviation = -1;

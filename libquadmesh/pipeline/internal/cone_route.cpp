@@ -64,6 +64,7 @@ Candidate cone_attempt(const FormSetup& setup, const ConePlacementOptions& place
   r.surface = soup;
   r.singularities = "cones";
   r.size = size;
+  r.expected_quads = setup.area / (size * size);  // the lattice's cells are size x size in the cone metric
   note_stray_boundary(r);
   Candidate c;
   c.quality = assess_candidate(r);
@@ -255,7 +256,7 @@ ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOpt
     const std::size_t cones_corners = corner_mismatches(cones.result);
     if (!cones_replace(cones.quality, cones_band, abel_band, cones_corners, abel_corners, input, options.acceptance)) {
       outcome.failure = fmt::format(
-          "its quads were not better ({}; {:.0f}% in the size band against {:.0f}%; {} corners with the wrong "
+          "the cones' quads were not better ({}; {:.0f}% in the size band against {:.0f}%; {} corners with the wrong "
           "quad count against {})",
           sound(cones.quality, input, options.acceptance) ? "sound" : "not sound: " + unsound_reason(cones.quality, input),
           100 * cones_band, 100 * abel_band, cones_corners, abel_corners);
@@ -265,7 +266,8 @@ ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOpt
     // where they deviate, the cones' not yet)
     const double distance = relative_hausdorff(cones.result);
     if (distance > options.acceptance.max_hausdorff_relative) {
-      outcome.failure = fmt::format("its quads are {:.2g}% of the diagonal from the surface (at most {:.2g}% allowed)",
+      outcome.failure = fmt::format("the cones' quads are {:.2g}% of the diagonal from the surface (at most {:.2g}% "
+                                    "allowed)",
                                     100 * distance, 100 * options.acceptance.max_hausdorff_relative);
       return outcome;
     }
