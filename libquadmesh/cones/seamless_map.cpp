@@ -159,7 +159,8 @@ std::vector<Translation> add_seams(const TriangleSoup& soup, const SurfaceAdjace
 }
 
 /// The values quantization makes integer, in the order of their phases: the
-/// cones' positions first (a cut translation ending at a cone is (1 - i^q) times
+/// cones' positions first (the interior ones, and the boundary corners in an even
+/// number of quads other than 2; a cut translation ending at a cone is (1 - i^q) times
 /// the cone's position, integer once the position is, while an integer translation
 /// may leave the cone at a half-integer point), then the boundary lines, then the
 /// cut translations.
@@ -188,7 +189,13 @@ IntegerCandidates integer_candidates(const TriangleSoup& soup, const SurfaceAdja
       const int v = soup.triangles[f][ks];
       const auto sv = static_cast<std::size_t>(v);
       const int wedge = cut.wedge[f][ks];
-      if (!adjacency.boundary_vertex[sv] && quads[sv] != 4 && !seen[sv]++) {
+      // a boundary corner in an even number of quads (4 at a slit-like tip: the
+      // plate round a 16-degree notch) lies on one boundary line with both its
+      // sides: the line fixes one coordinate, the rounding of the position the
+      // other (else the tip falls between lattice points, and the quads' boundary
+      // runs past it into S). An odd count is two lines' crossing, 2 a straight side
+      const bool cone = adjacency.boundary_vertex[sv] ? quads[sv] >= 4 && quads[sv] % 2 == 0 : quads[sv] != 4;
+      if (cone && !seen[sv]++) {
         phases[0].push_back(real_of(wedge));
         phases[0].push_back(imag_of(wedge));
       }
@@ -328,6 +335,8 @@ class PenaltySolver {
     return z;
   }
 
+  const std::vector<Row>& rows() const { return rows_; }
+
   double max_residual(const Eigen::VectorXd& z) const {
     double worst = 0;
     for (const Row& r : rows_) {
@@ -353,6 +362,36 @@ class PenaltySolver {
   std::size_t columns_ = 0;
   bool refactor_ = false;  ///< fixes in the factorization were taken back
 };
+
+/// Sets exactly what the seam rows make of exact values: a row z_g = i^q z_f + t
+/// whose other terms are exact gives its last one exactly, repeated until none
+/// does. `exact` starts as the values made integer. Without it a wedge tied to an
+/// integer only by the rows keeps the penalty's error (up to 1e-5 after the
+/// stiffening): at a corner or cone whose wedges differ, the extraction's reference
+/// chart may be such a wedge, and the lattice point then lies beside the vertex
+/// (off S's boundary at a corner: a stray point).
+void propagate_exact_values(const std::vector<Row>& rows, std::vector<char>& exact, Eigen::VectorXd& z) {
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (const Row& r : rows) {
+      int unknown = -1, count = 0;
+      double known = 0, coefficient = 0;
+      for (const auto& [i, c] : r.terms) {
+        if (exact[static_cast<std::size_t>(i)]) {
+          known += c * z[i];
+        } else {
+          ++count;
+          unknown = i;
+          coefficient = c;
+        }
+      }
+      if (count != 1 || std::abs(coefficient) != 1.0) continue;
+      z[unknown] = (r.rhs - known) / coefficient;
+      exact[static_cast<std::size_t>(unknown)] = 1;
+      changed = true;
+    }
+  }
+}
 
 /// The integers to try for values `v` at z, nearest first: each value's nearest
 /// integer, then the next one on its other side (for one value also the next on
@@ -522,9 +561,17 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   // the penalty leaves the integer values ~1e-9 off, the size of the extraction's
   // fixed-point unit (2^-30): they are set exactly, so that cones and boundary
   // lines are lattice points and lines in every chart
-  for (const auto& [v, value] : integers) z[v] = value;
+  std::vector<char> exact(static_cast<std::size_t>(variables), 0);
+  for (const auto& [v, value] : integers) {
+    z[v] = value;
+    exact[static_cast<std::size_t>(v)] = 1;
+  }
   for (std::size_t v = 0; v < candidates.same_as.size(); ++v)
-    if (candidates.same_as[v] >= 0) z[static_cast<Eigen::Index>(v)] = z[candidates.same_as[v]];
+    if (candidates.same_as[v] >= 0) {
+      z[static_cast<Eigen::Index>(v)] = z[candidates.same_as[v]];
+      exact[v] = 1;
+    }
+  propagate_exact_values(solver.rows(), exact, z);
   report.max_seam_residual = solver.max_residual(z);
 
   FaceMap map;

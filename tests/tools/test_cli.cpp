@@ -603,6 +603,48 @@ TEST_CASE("mesh --singularities auto: a T-plate the Abel route folds meshes with
   CHECK(q["size_ratio_max"].get<double>() <= 3.0);
 }
 
+TEST_CASE("mesh (auto): a 16-degree notch's tip is a lattice point in four quads, the quads' boundary goes round it" *
+          doctest::test_suite("slow")) {
+  // the plate turns 343.7 degrees round the tip of plate-v-hole's triangular hole:
+  // a boundary cone of four quads whose two sides lie on one lattice line. Its
+  // position along that line is rounded too; when it was not, the tip fell 0.09
+  // quads short of a lattice point and the quads' boundary ran past it into the
+  // plate (one stray point), so the Abel quads were kept (7 corners wrong)
+  const std::string dir = test::scratch_dir("cli_v_notch");
+  const std::string output = dir + "/out.msh", report = dir + "/report.json";
+  const Run run = quadmesh("mesh " + quoted(test::example("plate-v-hole.geo")) + " -o " + quoted(output) +
+                           " --size 1.5% -q --report " + quoted(report));
+  REQUIRE(run.status == 0);
+  CHECK(run.error_lines().empty());
+  const auto j = nlohmann::json::parse(slurp(report));
+  CHECK(j["singularities"]["route"] == "cones");
+  bool tip = false;
+  for (const auto& cone : j["singularities"]["cones"]) {
+    const auto& at = cone["position"];
+    if (std::abs(at[0].get<double>() - 50) < 1e-9 && std::abs(at[1].get<double>() - 30) < 1e-9) {
+      tip = true;
+      CHECK(cone["quads"] == 4);
+      CHECK(cone["on_boundary"] == true);
+    }
+  }
+  CHECK(tip);
+  CHECK(j["extraction"]["stray_boundary_points"] == 0);
+  const auto& q = j["quality"];
+  CHECK(q["euler_characteristic"] == -1);
+  CHECK(q["boundary_loops"] == 3);
+  CHECK(q["inverted"] == 0);
+  CHECK(q["corners"]["convex"] == 4);
+  CHECK(q["corners"]["concave"] == 2);
+  CHECK(q["corners"]["other"] == 1);
+  CHECK(q["corners"]["convex_wrong"].get<int>() + q["corners"]["concave_wrong"].get<int>() +
+            q["corners"]["other_wrong"].get<int>() ==
+        0);
+  CHECK(q["min_scaled_jacobian"].get<double>() >= 0.3);
+  CHECK(q["hausdorff_rel"].get<double>() <= 0.01);
+  CHECK(q["size_band_share"].get<double>() >= 0.9);
+  CHECK(q["size_ratio_max"].get<double>() <= 3.0);
+}
+
 TEST_CASE("mesh --singularities auto: kitten's coarse hole polygons get every corner right, the quads in the band" *
           doctest::test_suite("slow")) {
   // its two holes are polygons of 19 and 21 edges of 0.65 to 2.7 quads, with corners

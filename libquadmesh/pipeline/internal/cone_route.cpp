@@ -5,6 +5,7 @@
 #include "libquadmesh/param/internal/surface_adjacency.h"
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/pipeline/internal/attempt.h"
+#include "libquadmesh/pipeline/internal/quad_improvement.h"
 #include "libquadmesh/quality/hausdorff.h"
 #include "libquadmesh/quality/size_band.h"
 
@@ -32,7 +33,7 @@ std::vector<ConePlacementOptions> cone_placements(InteriorCones interior) {
 }
 
 Candidate cone_attempt(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages,
-                       std::vector<std::vector<Cone>>& placed, double lattice_factor) {
+                       std::vector<std::vector<Cone>>& placed, double lattice_factor, bool smooth_inverted) {
   QuadMeshResult r = setup.preamble;
   const TriangleSoup& soup = setup.soup;
   const double size = setup.preamble.size_requested * lattice_factor;
@@ -68,6 +69,18 @@ Candidate cone_attempt(const FormSetup& setup, const ConePlacementOptions& place
   note_stray_boundary(r);
   Candidate c;
   c.quality = assess_candidate(r);
+  if (smooth_inverted && c.quality.inverted + c.quality.flipped > 0) {
+    // the smoothing moves only regular interior points, each move kept only when it
+    // raises its quads' worst corner: a corner turned over beside a cone is often
+    // lifted (fertility's best placement: 4 such quads, none after it)
+    QuadMeshResult smoothed = r;
+    smoothed.smoothing = smooth_worst(smoothed);
+    const CandidateQuality quality = assess_candidate(smoothed);
+    if (quality.inverted + quality.flipped < c.quality.inverted + c.quality.flipped) {
+      r = std::move(smoothed);
+      c.quality = quality;
+    }
+  }
   c.result = std::move(r);
   return c;
 }
@@ -165,7 +178,7 @@ std::optional<ConeCandidate> first_sound_placement(const FormSetup& setup, const
     if (attempts_left == 0) break;
     --attempts_left;
     try {
-      last = cone_attempt(setup, placement, stages, placed, lattice_factor);
+      last = cone_attempt(setup, placement, stages, placed, lattice_factor, options.smoothing);
     } catch (const Error& e) {
       if (failure.empty()) failure = e.what();
       continue;

@@ -23,12 +23,14 @@ constexpr double size_band_goal = 0.9;
 /// Meshes `setup.soup` by the cone route at the requested quad edge times
 /// `lattice_factor` (the quality still measured against the requested one): the result
 /// (the preamble's fields, surface, quads, boundary loops of the points, cones,
-/// extraction) measured once.
+/// extraction) measured. With `smooth_inverted`, quads left inverted or flipped by
+/// the extraction have the worst quads smoothed first (quad_improvement.h
+/// smooth_worst, what the written quads get), kept when fewer are left so.
 /// Throws qm::Error when a stage cannot be done (a boundary loop the field cannot
 /// meet, a failed solve), or when the cones placed are a set in `placed` (tried
 /// before); else adds them there.
 Candidate cone_attempt(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages,
-                       std::vector<std::vector<Cone>>& placed, double lattice_factor = 1.0);
+                       std::vector<std::vector<Cone>>& placed, double lattice_factor, bool smooth_inverted);
 
 /// The cone placements the route tries in turn, until one gives sound quads: the
 /// defaults, then without the valence-3/5 pairs that even the sizes (more cones,

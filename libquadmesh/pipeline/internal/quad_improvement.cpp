@@ -12,12 +12,21 @@ constexpr double max_move_fraction = 0.5;
 
 }  // namespace
 
+QuadSmoothingReport smooth_worst(QuadMeshResult& result) {
+  QuadSmoothingOptions smoothing;
+  smoothing.max_move = max_move_fraction * result.size_requested;
+  return smooth_worst_quads(result.surface, result.quads, result.boundary_loop_of_point, smoothing);
+}
+
 void improve_quads(QuadMeshResult& best, const QuadMeshOptions& options, Stages& stages) {
   if (options.smoothing && !best.quads.quads.empty()) {
     stages.next("smoothing", "smoothing the worst quads");
-    QuadSmoothingOptions smoothing;
-    smoothing.max_move = max_move_fraction * best.size_requested;
-    best.smoothing = smooth_worst_quads(best.surface, best.quads, best.boundary_loop_of_point, smoothing);
+    const QuadSmoothingReport earlier = best.smoothing;
+    best.smoothing = smooth_worst(best);
+    if (earlier.moved_points > 0) {
+      best.smoothing.moved_points += earlier.moved_points;
+      best.smoothing.min_before = earlier.min_before;
+    }
   }
   std::vector<char> fitted(best.quads.points.size(), 0);  // the corners the fitting moved stay
   if (best.max_deviation > 0 && !best.quads.quads.empty() &&

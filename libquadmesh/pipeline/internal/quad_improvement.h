@@ -7,7 +7,14 @@
 
 namespace qm {
 
-/// Smooths the worst quads (QuadMeshOptions::smoothing), fits the corners onto S
+/// Smooths the worst quads of `result` (extract/quad_smoothing.h), each point
+/// moving at most half the requested size; returns what it did. The first step of
+/// improve_quads; the cone route also runs it on a candidate with inverted or
+/// flipped quads before judging it (cone_route.h), as the quads written would be.
+QuadSmoothingReport smooth_worst(QuadMeshResult& result);
+
+/// Smooths the worst quads (QuadMeshOptions::smoothing; a smoothing done before,
+/// `best.smoothing`, is added to the report), fits the corners onto S
 /// where the quads cut across it (when refined, and the deviation is within reach),
 /// then moves every regular interior corner towards right angles. The topology of
 /// `best.quads` does not change.
