@@ -122,6 +122,14 @@ struct QuadQuality {
   Vec3 hausdorff_at = Vec3::Zero();   ///< the sample (of the mesh or the reference) at that distance
 };
 
+/// The reference's corners, all three kinds, and those of them in the wrong number of quads.
+inline std::size_t corners_total(const QuadQuality& q) {
+  return q.corners_convex + q.corners_concave + q.corners_other;
+}
+inline std::size_t corners_wrong(const QuadQuality& q) {
+  return q.corners_convex_wrong + q.corners_concave_wrong + q.corners_other_wrong;
+}
+
 /// The per-element values behind QuadQuality's shape statistics, for histograms:
 /// one entry per quad (in face order) or per quad corner. Triangles and larger
 /// faces are skipped.

@@ -133,21 +133,26 @@ TEST_CASE("mesh: pure quads with the input's topology, quality and groups (plate
   expect_quad_mesh(test::shared_mesh("kitten-2holes.obj"), "1.5%", -2, 2, {"boundary_0", "boundary_1"});
 }
 
-/// `quadmesh mesh` on a .geo text written to `dir`, with `-q` and `--report`: it
+/// `quadmesh mesh INPUT` (output and report in `dir`), with `-q` and `--report`: it
 /// exits 0 and writes the mesh; the run and the report.
 struct WrittenMesh {
   Run run;
   nlohmann::json report;
 };
-WrittenMesh mesh_geo(const std::string& dir, const std::string& geo, const std::string& size,
-                     const std::string& more_options = "") {
-  const std::string input = test::write_text(dir, "input.geo", geo);
+WrittenMesh mesh_input(const std::string& dir, const std::string& input, const std::string& size,
+                       const std::string& more_options = "") {
   const std::string output = dir + "/out.msh", report = dir + "/report.json";
   const Run run = quadmesh("mesh " + quoted(input) + " -o " + quoted(output) + " --size " + size + " -q --report " +
                            quoted(report) + more_options);
   CHECK(run.status == 0);
   CHECK(std::filesystem::exists(output));
   return {run, std::filesystem::exists(report) ? nlohmann::json::parse(slurp(report)) : nlohmann::json()};
+}
+
+/// The same on a .geo text written to `dir`.
+WrittenMesh mesh_geo(const std::string& dir, const std::string& geo, const std::string& size,
+                     const std::string& more_options = "") {
+  return mesh_input(dir, test::write_text(dir, "input.geo", geo), size, more_options);
 }
 
 TEST_CASE("mesh --singularities abel: quads far from the input on a long end are written, with one warning line that "
@@ -610,13 +615,10 @@ TEST_CASE("mesh (auto): a 16-degree notch's tip is a lattice point in four quads
   // position along that line is rounded too; when it was not, the tip fell 0.09
   // quads short of a lattice point and the quads' boundary ran past it into the
   // plate (one stray point), so the Abel quads were kept (7 corners wrong)
-  const std::string dir = test::scratch_dir("cli_v_notch");
-  const std::string output = dir + "/out.msh", report = dir + "/report.json";
-  const Run run = quadmesh("mesh " + quoted(test::example("plate-v-hole.geo")) + " -o " + quoted(output) +
-                           " --size 1.5% -q --report " + quoted(report));
-  REQUIRE(run.status == 0);
-  CHECK(run.error_lines().empty());
-  const auto j = nlohmann::json::parse(slurp(report));
+  const WrittenMesh m = mesh_input(test::scratch_dir("cli_v_notch"), test::example("plate-v-hole.geo"), "1.5%");
+  REQUIRE(m.run.status == 0);
+  CHECK(m.run.error_lines().empty());
+  const auto& j = m.report;
   CHECK(j["singularities"]["route"] == "cones");
   bool tip = false;
   for (const auto& cone : j["singularities"]["cones"]) {

@@ -68,9 +68,7 @@ const std::vector<Metric>& metrics() {
       {"max size", "largest quad size / the size", Better::lower, "{:.2f}",
        [](const QuadQuality& q) { return q.size_ratio_max; }, false},
       {"corners wrong", "corners not in max(1, round(angle / 90 deg)) quads", Better::lower, "{:.0f}",
-       [](const QuadQuality& q) {
-         return static_cast<double>(q.corners_convex_wrong + q.corners_concave_wrong + q.corners_other_wrong);
-       }, false},
+       [](const QuadQuality& q) { return static_cast<double>(corners_wrong(q)); }, false},
   };
   return all;
 }

@@ -290,11 +290,10 @@ namespace {
 /// What the Abel quads miss that sends auto to the cones (cone_route.h): the size
 /// band, the corners' quad counts, or both.
 std::string abel_shortfall(const QuadQuality& q, double band_share) {
-  const std::size_t corners = q.corners_convex_wrong + q.corners_concave_wrong + q.corners_other_wrong;
   const std::string band = fmt::format("{:.0f}% of them within [0.5, 2] x --size", 100 * band_share);
-  if (corners == 0) return "miss the size band (" + band + ")";
-  return fmt::format("put {} of the input's {} corners in the wrong number of quads ({})", corners,
-                     q.corners_convex + q.corners_concave + q.corners_other, band);
+  if (corners_wrong(q) == 0) return "miss the size band (" + band + ")";
+  return fmt::format("put {} of the input's {} corners in the wrong number of quads ({})", corners_wrong(q),
+                     corners_total(q), band);
 }
 
 }  // namespace

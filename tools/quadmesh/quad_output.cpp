@@ -303,7 +303,7 @@ void print_summary(const MeshSummary& s) {
   fmt::print("topology            chi {} (input {}), {} boundary loops (input {})\n", q.euler_characteristic,
              s.input_euler_characteristic, q.boundary_loops, s.input_boundary_loops);
   fmt::print("Hausdorff distance  {:.3g} of the diagonal\n", q.hausdorff_rel);
-  if (q.corners_convex + q.corners_concave + q.corners_other > 0)
+  if (corners_total(q) > 0)
     fmt::print("corners             {} convex ({} not in one quad), {} concave ({} not in three), {} other ({} wrong)\n",
                q.corners_convex, q.corners_convex_wrong, q.corners_concave, q.corners_concave_wrong, q.corners_other,
                q.corners_other_wrong);
