@@ -10,6 +10,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -80,33 +81,45 @@ std::vector<int> ring_neighbourhood(const TriangleSoup& soup, const SurfaceAdjac
   return out;
 }
 
-/// Per vertex: within `separation` edges of an interior cone other than cones[moving].
-std::vector<char> crowded(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const std::vector<Cone>& cones,
-                          std::ptrdiff_t moving, int separation) {
-  // one breadth-first walk from all of them at once: the union of their
-  // neighbourhoods of `separation` rings
-  std::vector<char> near(soup.points.size(), 0);
-  std::vector<int> depth(soup.points.size(), -1);
-  std::vector<int> order;
-  for (std::size_t j = 0; j < cones.size(); ++j) {
-    const auto v = static_cast<std::size_t>(cones[j].vertex);
-    if (static_cast<std::ptrdiff_t>(j) == moving || adjacency.boundary_vertex[v] || depth[v] == 0) continue;
-    depth[v] = 0;
-    order.push_back(cones[j].vertex);
+/// Whether a vertex lies within `separation` edges of an interior cone other than
+/// cones[moving]: a breadth-first walk of at most `separation` rings from the
+/// vertex (asked only of the moves worth making, not of every vertex).
+class ConeCrowding {
+ public:
+  ConeCrowding(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, int separation)
+      : soup_(soup), adjacency_(adjacency), separation_(separation), stamp_(soup.points.size(), 0) {}
+
+  bool near_other(const std::vector<Cone>& cones, std::size_t moving, int v) {
+    std::vector<int> others;
+    for (std::size_t j = 0; j < cones.size(); ++j)
+      if (j != moving && !adjacency_.boundary_vertex[static_cast<std::size_t>(cones[j].vertex)])
+        others.push_back(cones[j].vertex);
+    if (others.empty()) return false;
+    std::sort(others.begin(), others.end());
+    ++walk_;
+    std::vector<std::pair<int, int>> queue{{v, 0}};
+    stamp_[static_cast<std::size_t>(v)] = walk_;
+    for (std::size_t next = 0; next < queue.size(); ++next) {
+      const auto [w, depth] = queue[next];
+      if (std::binary_search(others.begin(), others.end(), w)) return true;
+      if (depth == separation_) continue;
+      for (int f : adjacency_.vertex_faces[static_cast<std::size_t>(w)])
+        for (int x : soup_.triangles[static_cast<std::size_t>(f)])
+          if (stamp_[static_cast<std::size_t>(x)] != walk_) {
+            stamp_[static_cast<std::size_t>(x)] = walk_;
+            queue.push_back({x, depth + 1});
+          }
+    }
+    return false;
   }
-  for (std::size_t next = 0; next < order.size(); ++next) {
-    const auto w = static_cast<std::size_t>(order[next]);
-    near[w] = 1;
-    if (depth[w] == separation) continue;
-    for (int f : adjacency.vertex_faces[w])
-      for (int x : soup.triangles[static_cast<std::size_t>(f)])
-        if (depth[static_cast<std::size_t>(x)] < 0) {
-          depth[static_cast<std::size_t>(x)] = depth[w] + 1;
-          order.push_back(x);
-        }
-  }
-  return near;
-}
+
+ private:
+  const TriangleSoup& soup_;
+  const SurfaceAdjacency& adjacency_;
+  int separation_;
+  std::vector<unsigned> stamp_;  ///< the walk that last reached each vertex
+  unsigned walk_ = 0;
+};
 
 /// Moves interior cones, one at a time, to where the field meets every boundary
 /// loop closest to a whole quarter turn (cross_field.h LoopTurns), within
@@ -128,6 +141,7 @@ double align_loops_by_cones(const TriangleSoup& soup, const SurfaceAdjacency& ad
     return c;
   };
   double current = cost(dot);
+  ConeCrowding crowding(soup, adjacency, separation);
   // when no move within `rings` edges helps any more and the loops are still
   // turned, the cones may go farther (on a coarse triangulation `rings` edges
   // are a few quads only)
@@ -139,16 +153,16 @@ double align_loops_by_cones(const TriangleSoup& soup, const SurfaceAdjacency& ad
         const double k = (4 - cone.quads) * quarter_turn;
         int best = -1;
         std::vector<double> best_dot;
-        const std::vector<char> near = crowded(soup, adjacency, cones, &cone - cones.data(), separation);
+        const auto moving = static_cast<std::size_t>(&cone - cones.data());
         for (int w : ring_neighbourhood(soup, adjacency, cone.vertex, widen * rings)) {
           const auto sw = static_cast<std::size_t>(w);
-          if (near[sw] || !eligible[sw]) continue;
+          if (!eligible[sw]) continue;
           std::vector<double> trial = dot;
           for (std::size_t l = 0; l < loops; ++l)
             if (static_cast<int>(l) != model.reference)
               trial[l] += k * (model.gradient[l][w] - model.gradient[l][cone.vertex]);
           const double c = cost(trial);
-          if (c < current - 1e-9) {
+          if (c < current - 1e-9 && !crowding.near_other(cones, moving, w)) {
             current = c;
             best = w;
             best_dot = trial;
@@ -212,6 +226,7 @@ void relax_cones_for_size(const TriangleSoup& soup, const SurfaceAdjacency& adja
   double mean = 0;
   double spread = size_spread(u, area, mean);
   double aligned = alignment_cost(cones);
+  ConeCrowding crowding(soup, adjacency, separation);
   for (int pass = 0; pass < passes; ++pass) {
     Eigen::VectorXd weighted(u.size());
     for (Eigen::Index v = 0; v < u.size(); ++v) weighted[v] = area[static_cast<std::size_t>(v)] * (u[v] - mean);
@@ -221,15 +236,20 @@ void relax_cones_for_size(const TriangleSoup& soup, const SurfaceAdjacency& adja
       const int a = cones[i].vertex;
       if (adjacency.boundary_vertex[static_cast<std::size_t>(a)]) continue;
       const double k = (4 - cones[i].quads) * quarter_turn;
-      const std::vector<char> near = crowded(soup, adjacency, cones, static_cast<std::ptrdiff_t>(i), separation);
-      int best = -1;
-      double best_drop = 0;
+      // the neighbours by the first-order drop, largest first (the first of equal
+      // ones), the first not crowded by another cone taken
+      std::vector<std::pair<double, int>> moves;
       for (int b : ring_neighbourhood(soup, adjacency, a, 1)) {
-        const auto sb = static_cast<std::size_t>(b);
-        if (b == a || near[sb] || !eligible[sb]) continue;
         const double drop = k * (g[a] - g[b]);
-        if (drop > best_drop) best_drop = drop, best = b;
+        if (b != a && eligible[static_cast<std::size_t>(b)] && drop > 0) moves.push_back({drop, b});
       }
+      std::stable_sort(moves.begin(), moves.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+      int best = -1;
+      for (const auto& [drop, b] : moves)
+        if (!crowding.near_other(cones, i, b)) {
+          best = b;
+          break;
+        }
       if (best < 0) continue;
       std::vector<Cone> trial = cones;
       trial[i].vertex = best;

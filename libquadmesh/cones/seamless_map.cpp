@@ -2,6 +2,7 @@
 
 #include "libquadmesh/cones/internal/boundary_segments.h"
 #include "libquadmesh/cones/internal/face_geometry.h"
+#include "libquadmesh/cones/internal/translation_classes.h"
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/core/internal/union_find.h"
 
@@ -11,7 +12,6 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -45,6 +45,10 @@ constexpr int max_low_rank = 64;
 /// rounding to other than the nearest integer that breaks them is refused, and no
 /// stiffening is tried on integers that break them.
 constexpr double max_consistent_residual = 1e-4;
+/// The residual the seam rows and fixed values are held to at the end (lattice
+/// units), by at most this many multiplier updates (PenaltySolver::hold_constraints).
+constexpr double constraint_tolerance = 1e-10;
+constexpr int max_multiplier_rounds = 4;
 
 /// A real linear constraint sum coefficient * variable = rhs.
 struct Row {
@@ -56,15 +60,17 @@ struct Row {
 int real_of(int wedge) { return 2 * wedge; }
 int imag_of(int wedge) { return 2 * wedge + 1; }
 
+/// i^q (x + i y), component c, is sign[q][c] times component from[q][c] of (x, y):
+/// q = 0: (x, y); 1: (-y, x); 2: (-x, -y); 3: (y, -x).
+constexpr int turned_from[4][2] = {{0, 1}, {1, 0}, {0, 1}, {1, 0}};
+constexpr double turned_sign[4][2] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
+
 /// The rows of W_g(p) - i^q W_f(p) - t = 0 (two real rows).
 void add_transition(int wedge_g, int wedge_f, int q, int t_var, std::vector<Row>& rows) {
-  // i^q (x + i y): q = 0: (x, y); 1: (-y, x); 2: (-x, -y); 3: (y, -x)
-  static constexpr int from[4][2] = {{0, 1}, {1, 0}, {0, 1}, {1, 0}};
-  static constexpr double sign[4][2] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
   for (int c = 0; c < 2; ++c) {
     Row r;
     r.terms.push_back({2 * wedge_g + c, 1.0});
-    r.terms.push_back({2 * wedge_f + from[q][c], -sign[q][c]});
+    r.terms.push_back({2 * wedge_f + turned_from[q][c], -turned_sign[q][c]});
     r.terms.push_back({t_var + c, -1.0});
     rows.push_back(std::move(r));
   }
@@ -111,12 +117,11 @@ void add_fitting_energy(const TriangleSoup& soup, const std::vector<Complex>& sc
 }
 
 /// A cut edge's translation variable (the first of two) and, at each of its ends,
-/// the transition it takes part in: (wedge on the far side, wedge on the near side,
-/// quarter turns). Two cut edges with one such transition in common have one
-/// translation (their rows say so).
+/// the transition it takes part in. Two cut edges with one such transition in
+/// common have one translation up to a quarter turn (translation_classes.h).
 struct Translation {
   int variable = -1;
-  std::array<std::array<int, 3>, 2> ends{};
+  std::array<TransitionEnd, 2> ends{};
 };
 
 /// Transitions across cut edges and boundary alignment; returns the translation of
@@ -166,9 +171,10 @@ std::vector<Translation> add_seams(const TriangleSoup& soup, const SurfaceAdjace
 /// cut translations.
 struct IntegerCandidates {
   std::vector<std::vector<int>> phases;
-  /// per variable, the candidate it equals by the seam rows (-1: none but itself):
-  /// set to the same integer at the end
+  /// per variable, the candidate it equals (times same_sign) by the seam rows (-1:
+  /// none but itself): set from that candidate's integer at the end
   std::vector<int> same_as;
+  std::vector<double> same_sign;
 };
 
 IntegerCandidates integer_candidates(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
@@ -176,6 +182,7 @@ IntegerCandidates integer_candidates(const TriangleSoup& soup, const SurfaceAdja
                                      const std::vector<Translation>& translations, int variables) {
   IntegerCandidates out;
   out.same_as.assign(static_cast<std::size_t>(variables), -1);
+  out.same_sign.assign(static_cast<std::size_t>(variables), 1.0);
   std::vector<std::vector<int>>& phases = out.phases;
   phases.resize(3);
   std::vector<char> seen(soup.points.size(), 0);
@@ -219,26 +226,25 @@ IntegerCandidates integer_candidates(const TriangleSoup& soup, const SurfaceAdja
       out.same_as[static_cast<std::size_t>(v)] = first;
     }
   }
-  // likewise the translations of a cut path's edges: one per path
-  std::map<std::array<int, 3>, int> first_at;
-  UnionFind path(translations.size());
-  for (std::size_t i = 0; i < translations.size(); ++i)
-    for (const std::array<int, 3>& end : translations[i].ends) {
-      const auto [at, fresh] = first_at.emplace(end, static_cast<int>(i));
-      if (!fresh) path.unite(at->second, static_cast<int>(i));
-    }
-  std::vector<int> first_path(translations.size(), -1);
+  // likewise the translations of a cut path's edges: one per path, the others a
+  // quarter turn of it
+  std::vector<std::array<TransitionEnd, 2>> ends;
+  for (const Translation& t : translations) ends.push_back(t.ends);
+  const TranslationClasses classes = translation_classes(ends);
   for (std::size_t i = 0; i < translations.size(); ++i) {
     const int t = translations[i].variable;
-    int& first = first_path[static_cast<std::size_t>(path.find(static_cast<int>(i)))];
-    if (first >= 0) {
-      out.same_as[static_cast<std::size_t>(t)] = first;
-      out.same_as[static_cast<std::size_t>(t + 1)] = first + 1;
+    const auto r = static_cast<std::size_t>(classes.representative[i]);
+    if (r == i) {
+      phases[2].push_back(t);
+      phases[2].push_back(t + 1);
       continue;
     }
-    first = t;
-    phases[2].push_back(t);
-    phases[2].push_back(t + 1);
+    const int k = classes.quarter_turns[i];
+    for (int c = 0; c < 2; ++c) {
+      const auto v = static_cast<std::size_t>(t + c);
+      out.same_as[v] = translations[r].variable + turned_from[k][c];
+      out.same_sign[v] = turned_sign[k][c];
+    }
   }
   return out;
 }
@@ -332,6 +338,29 @@ class PenaltySolver {
     const Eigen::VectorXd c = M.partialPivLu().solve(gap);
     Eigen::VectorXd z = factored_solution_ + Y_.leftCols(K) * c;
     if (!z.allFinite()) return solve();
+    return z;
+  }
+
+  /// z (the minimizer with every value fixed so far) with the seam rows and fixed
+  /// values held to round-off: the penalty leaves them off by the energy's pull
+  /// over penalty_weight (up to 1e-4 where the stiffening weighs a triangle 1e3).
+  /// Multiplier updates of the augmented Lagrangian method, z <- z - H^-1 w C^T
+  /// (C z - d), each one back-substitution on the system's factorization; each
+  /// shrinks the residual by about the energy's weight over the penalty's.
+  Eigen::VectorXd hold_constraints(Eigen::VectorXd z) {
+    if (refactor_ || factored_ != fixed_.size()) z = solve();
+    for (int round = 0; round < max_multiplier_rounds && max_residual(z) > constraint_tolerance; ++round) {
+      Eigen::VectorXd pull = Eigen::VectorXd::Zero(n_);
+      for (const Row& r : rows_) {
+        double s = -r.rhs;
+        for (const auto& [i, c] : r.terms) s += c * z[i];
+        for (const auto& [i, c] : r.terms) pull[i] += penalty_weight * c * s;
+      }
+      for (const auto& [v, value] : fixed_) pull[v] += penalty_weight * (z[v] - value);
+      const Eigen::VectorXd step = solver_.solve(pull);
+      if (solver_.info() != Eigen::Success || !step.allFinite()) break;
+      z -= step;
+    }
     return z;
   }
 
@@ -558,6 +587,7 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
     ++report.solves;
     ++report.stiffening_rounds;
   }
+  if (seams_close) z = solver.hold_constraints(std::move(z));
   // the penalty leaves the integer values ~1e-9 off, the size of the extraction's
   // fixed-point unit (2^-30): they are set exactly, so that cones and boundary
   // lines are lattice points and lines in every chart
@@ -568,7 +598,7 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   }
   for (std::size_t v = 0; v < candidates.same_as.size(); ++v)
     if (candidates.same_as[v] >= 0) {
-      z[static_cast<Eigen::Index>(v)] = z[candidates.same_as[v]];
+      z[static_cast<Eigen::Index>(v)] = candidates.same_sign[v] * z[candidates.same_as[v]];
       exact[v] = 1;
     }
   propagate_exact_values(solver.rows(), exact, z);
