@@ -1,6 +1,7 @@
 // The cone route's attempts (pipeline/internal/cone_route.h) on a shared scan: a
 // candidate is judged as its quads would be written.
 #include "io/read_surface.h"
+#include "libquadmesh/core/parallel.h"
 #include "libquadmesh/forms/long_edges.h"
 #include "libquadmesh/pipeline/internal/candidate_ranking.h"
 #include "libquadmesh/pipeline/internal/cone_route.h"
@@ -41,4 +42,41 @@ TEST_CASE("a cone candidate whose only fault is quads the smoothing turns back i
   CHECK(sound(smoothed.quality, input, options.acceptance));
   // the same lattice: only interior regular points moved
   CHECK(smoothed.result.quads.quads == raw.result.quads.quads);
+}
+
+TEST_CASE("cone placements tried side by side give what each gives alone, bit for bit, with their progress") {
+  // two threads: the first two placements at once on the plate with two holes;
+  // each attempt must equal cone_attempt's (no state shared between them), and a
+  // placement that throws must say so in its own slot
+  QuadMeshOptions options;
+  options.size_relative = 0.015;
+  io::ReadOptions read;
+  read.quad_size_relative = options.size_relative;
+  const TriangleSoup soup = analyze_topology(io::read_surface(test::example("plate-two-holes.geo"), read).soup).soup;
+  std::vector<std::pair<std::string, double>> timings;
+  Stages stages(timings, {});
+  const FormSetup setup = prepare_forms(soup, options, stages);
+  std::vector<ConePlacementOptions> placements = cone_placements();
+  placements.resize(2);
+  ConePlacementOptions impossible = placements[0];
+  impossible.boundary_distance = 1000;  // no inner vertex that far from the boundary: place_cones throws
+  placements.push_back(impossible);
+  const ThreadLimit limit(2);
+  const std::vector<ConeAttempt> side_by_side = cone_attempts_side_by_side(setup, placements, 1.0, true);
+  REQUIRE(side_by_side.size() == 3);
+  for (std::size_t i = 0; i < 2; ++i) {
+    CAPTURE(i);
+    const ConeAttempt& a = side_by_side[i];
+    REQUIRE(a.error.empty());
+    REQUIRE(a.candidate);
+    REQUIRE(a.cones);
+    CHECK(a.messages.size() == 3);  // placing, the seamless map, extracting
+    std::vector<std::vector<Cone>> placed;
+    const Candidate alone = cone_attempt(setup, placements[i], stages, placed, 1.0, true);
+    CHECK(a.candidate->result.quads.quads == alone.result.quads.quads);
+    CHECK(a.candidate->result.quads.points == alone.result.quads.points);
+    CHECK(a.cones->size() == alone.result.cones.size());
+  }
+  CHECK(side_by_side[2].error.find("no inner vertex is 1000 quads from the boundary") == 0);
+  CHECK(!side_by_side[2].candidate);
 }

@@ -4,6 +4,7 @@
 #include "libquadmesh/cones/cone_placement.h"
 #include "libquadmesh/param/internal/surface_adjacency.h"
 #include "libquadmesh/core/error.h"
+#include "libquadmesh/core/parallel.h"
 #include "libquadmesh/pipeline/internal/attempt.h"
 #include "libquadmesh/pipeline/internal/quad_improvement.h"
 #include "libquadmesh/quality/hausdorff.h"
@@ -32,26 +33,40 @@ std::vector<ConePlacementOptions> cone_placements(InteriorCones interior) {
   return {first, no_pairs, wider, widest};
 }
 
-Candidate cone_attempt(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages,
-                       std::vector<std::vector<Cone>>& placed, double lattice_factor, bool smooth_inverted) {
-  QuadMeshResult r = setup.preamble;
-  const TriangleSoup& soup = setup.soup;
-  const double size = setup.preamble.size_requested * lattice_factor;
-  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+namespace {
+
+/// The cones `placement` puts on setup.soup at the requested size times `lattice_factor`.
+std::vector<Cone> placed_cones(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages,
+                               double lattice_factor) {
   stages.next("cone_placement",
               placement.interior == InteriorCones::cross_field
                   ? std::string("placing quarter-turn cones (corners, then the smoothest cross field's singularities)")
                   : fmt::format("placing quarter-turn cones (corners, then the interior, {:g} quads from the boundary "
                                 "and {:g} apart)",
                                 placement.boundary_distance, placement.cone_spacing));
-  r.cones = place_cones(soup, adjacency, size, placement);
+  return place_cones(setup.soup, surface_adjacency(setup.soup), setup.preamble.size_requested * lattice_factor,
+                     placement);
+}
+
+/// Whether `cones` is one of the sets in `placed`.
+bool placed_before(const std::vector<Cone>& cones, const std::vector<std::vector<Cone>>& placed) {
   const auto same = [&](const std::vector<Cone>& other) {
-    return std::equal(other.begin(), other.end(), r.cones.begin(), r.cones.end(),
+    return std::equal(other.begin(), other.end(), cones.begin(), cones.end(),
                       [](const Cone& a, const Cone& b) { return a.vertex == b.vertex && a.quads == b.quads; });
   };
-  if (std::any_of(placed.begin(), placed.end(), same))
-    throw Error(ErrorCode::unsupported, "the same cones as a placement tried before");
-  placed.push_back(r.cones);
+  return std::any_of(placed.begin(), placed.end(), same);
+}
+
+constexpr const char* placed_before_error = "the same cones as a placement tried before";
+
+/// The quads of `cones` (cone_attempt after the placement).
+Candidate cone_quads(const FormSetup& setup, std::vector<Cone> cones, Stages& stages, double lattice_factor,
+                     bool smooth_inverted) {
+  QuadMeshResult r = setup.preamble;
+  const TriangleSoup& soup = setup.soup;
+  const double size = setup.preamble.size_requested * lattice_factor;
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  r.cones = std::move(cones);
   int corners = 0;
   for (const Cone& c : r.cones) corners += adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)];
   stages.next("cone_map", fmt::format("the seamless map with {} corner and {} interior cones", corners,
@@ -83,6 +98,37 @@ Candidate cone_attempt(const FormSetup& setup, const ConePlacementOptions& place
   }
   c.result = std::move(r);
   return c;
+}
+
+}  // namespace
+
+Candidate cone_attempt(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages,
+                       std::vector<std::vector<Cone>>& placed, double lattice_factor, bool smooth_inverted) {
+  std::vector<Cone> cones = placed_cones(setup, placement, stages, lattice_factor);
+  if (placed_before(cones, placed)) throw Error(ErrorCode::unsupported, placed_before_error);
+  placed.push_back(cones);
+  return cone_quads(setup, std::move(cones), stages, lattice_factor, smooth_inverted);
+}
+
+std::vector<ConeAttempt> cone_attempts_side_by_side(const FormSetup& setup,
+                                                    const std::vector<ConePlacementOptions>& placements,
+                                                    double lattice_factor, bool smooth_inverted) {
+  std::vector<ConeAttempt> out(placements.size());
+  parallel_for_index(placements.size(), [&](std::size_t i) {
+    ConeAttempt& attempt = out[i];
+    const ProgressCallback record = [&attempt](const std::string& message) { attempt.messages.push_back(message); };
+    Stages stages(attempt.timings, record);
+    try {
+      attempt.cones = placed_cones(setup, placements[i], stages, lattice_factor);
+      attempt.candidate = cone_quads(setup, *attempt.cones, stages, lattice_factor, smooth_inverted);
+      stages.close();
+    } catch (const Error& e) {
+      attempt.error = e.what();
+    } catch (...) {
+      attempt.unexpected = std::current_exception();  // rethrown by the caller, in order
+    }
+  });
+  return out;
 }
 
 bool sound(const CandidateQuality& c, SurfaceTopology input, const AcceptanceCriteria& criteria) {
@@ -174,16 +220,46 @@ std::optional<ConeCandidate> first_sound_placement(const FormSetup& setup, const
   std::vector<std::vector<Cone>> placed;
   const InteriorCones interior = options.cone_placement == ConePlacement::cross_field ? InteriorCones::cross_field
                                                                                      : InteriorCones::greedy;
-  for (const ConePlacementOptions& placement : cone_placements(interior)) {
-    if (attempts_left == 0) break;
-    --attempts_left;
-    try {
-      last = cone_attempt(setup, placement, stages, placed, lattice_factor, options.smoothing);
-    } catch (const Error& e) {
-      if (failure.empty()) failure = e.what();
+  const std::vector<ConePlacementOptions> placements = cone_placements(interior);
+  // with two threads, two placements at a time (each a seamless map of up to
+  // several seconds, on one core); the first sound one in order is kept, as one
+  // at a time would, and what a placement after it found is dropped
+  const std::size_t width = std::max<std::size_t>(1, std::min<std::size_t>(placements_side_by_side, worker_threads()));
+  bool found = false;
+  for (std::size_t start = 0; start < placements.size() && attempts_left > 0 && !found; start += width) {
+    if (width <= 1) {
+      --attempts_left;
+      try {
+        last = cone_attempt(setup, placements[start], stages, placed, lattice_factor, options.smoothing);
+      } catch (const Error& e) {
+        if (failure.empty()) failure = e.what();
+        continue;
+      }
+      found = sound(last->quality, input, options.acceptance);
       continue;
     }
-    if (sound(last->quality, input, options.acceptance)) break;
+    const std::size_t count = std::min({width, placements.size() - start, static_cast<std::size_t>(attempts_left)});
+    const std::vector<ConePlacementOptions> batch(placements.begin() + static_cast<std::ptrdiff_t>(start),
+                                                  placements.begin() + static_cast<std::ptrdiff_t>(start + count));
+    stages.announce(fmt::format("trying {} cone placements side by side", count));
+    std::vector<ConeAttempt> attempts = cone_attempts_side_by_side(setup, batch, lattice_factor, options.smoothing);
+    for (ConeAttempt& attempt : attempts) {
+      if (attempt.unexpected) std::rethrow_exception(attempt.unexpected);
+      --attempts_left;
+      stages.replay(attempt.messages, attempt.timings);
+      std::string error = attempt.error;
+      if (attempt.cones && placed_before(*attempt.cones, placed)) {
+        error = placed_before_error;
+      } else if (attempt.cones) {
+        placed.push_back(*attempt.cones);
+      }
+      if (!error.empty()) {
+        if (failure.empty()) failure = error;
+        continue;
+      }
+      last = std::move(attempt.candidate);
+      if ((found = sound(last->quality, input, options.acceptance))) break;
+    }
   }
   if (!last || !last->quality.has_quads) return std::nullopt;
   ConeCandidate out;

@@ -10,6 +10,7 @@
 #include "libquadmesh/pipeline/internal/stages.h"
 #include "libquadmesh/quality/size_band.h"
 
+#include <exception>
 #include <limits>
 #include <optional>
 #include <string>
@@ -31,6 +32,29 @@ constexpr double size_band_goal = 0.9;
 /// before); else adds them there.
 Candidate cone_attempt(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages,
                        std::vector<std::vector<Cone>>& placed, double lattice_factor, bool smooth_inverted);
+
+/// One placement's attempt run beside others (cone_attempts_side_by_side): its
+/// cones (none when the placement threw), its candidate or the qm::Error that
+/// stopped it, any other exception (to rethrow), its progress messages and stage
+/// timings.
+struct ConeAttempt {
+  std::optional<std::vector<Cone>> cones;
+  std::optional<Candidate> candidate;
+  std::string error;
+  std::exception_ptr unexpected;
+  std::vector<std::string> messages;
+  std::vector<std::pair<std::string, double>> timings;  ///< its stages (Stages)
+};
+
+/// How many placements the route tries at a time when the threads allow.
+constexpr std::size_t placements_side_by_side = 2;
+
+/// cone_attempt for each placement, side by side on the worker threads, without
+/// the check against placements tried before (the caller's, in order). A result
+/// does not depend on the threads: each attempt is computed on its own.
+std::vector<ConeAttempt> cone_attempts_side_by_side(const FormSetup& setup,
+                                                    const std::vector<ConePlacementOptions>& placements,
+                                                    double lattice_factor, bool smooth_inverted);
 
 /// The cone placements the route tries in turn, until one gives sound quads: the
 /// defaults, then without the valence-3/5 pairs that even the sizes (more cones,

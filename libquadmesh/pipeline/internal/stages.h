@@ -22,6 +22,21 @@ class Stages {
     key_ = key;
     if (progress_) progress_(message);
   }
+  /// Closes the running stage (if any) and says what comes next without timing it
+  /// as a stage of its own (work whose stages are timed elsewhere and replayed).
+  void announce(const std::string& message) {
+    close();
+    if (progress_) progress_(message);
+  }
+  /// What stages run elsewhere said and took (cone placements tried side by side,
+  /// each with its own Stages): the messages in order, the timings appended (they
+  /// overlap in wall-clock time with the other work run beside them).
+  void replay(const std::vector<std::string>& messages, const std::vector<std::pair<std::string, double>>& timings) {
+    if (progress_)
+      for (const std::string& message : messages) progress_(message);
+    out_.insert(out_.end(), timings.begin(), timings.end());
+    last_ = std::chrono::steady_clock::now();
+  }
   /// Closes the running stage (if any).
   void close() {
     const auto now = std::chrono::steady_clock::now();
@@ -32,7 +47,7 @@ class Stages {
 
  private:
   std::vector<std::pair<std::string, double>>& out_;
-  const ProgressCallback& progress_;
+  ProgressCallback progress_;  // a copy: a caller may pass a temporary ({})
   std::string key_;
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
