@@ -383,7 +383,7 @@ class PenaltySolver {
   std::vector<std::pair<int, double>> fixed_;   ///< values made integer
   SparseMatrix base_;                           ///< energy + seam penalties
   Eigen::VectorXd base_rhs_;
-  Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> solver_;
+  Eigen::CholmodSimplicialLLT<SparseMatrix, Eigen::Lower> solver_;
   bool analysed_ = false;
   std::size_t factored_ = 0;          ///< fixed_[0, factored_) are in the factorization
   Eigen::VectorXd factored_solution_;  ///< its solution
