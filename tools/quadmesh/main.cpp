@@ -46,8 +46,9 @@ void add_cad_sandbox_options(CLI::App& app, CommonOptions& common) {
 
 void add_threads_option(CLI::App& app, CommonOptions& common) {
   app.add_option("--threads", common.threads,
-                 "Worker threads for the loops whose iterations are independent (default: all cores); the "
-                 "results are the same bit for bit whatever the number")
+                 "Worker threads for the loops whose iterations are independent and, from two, for two cone "
+                 "placements at a time (default: all cores); the results are the same bit for bit whatever "
+                 "the number")
       ->type_name("UINT:N")
       ->check(CLI::Range(std::size_t{1}, std::size_t{4096}));
 }
