@@ -100,6 +100,24 @@ Candidate cone_quads(const FormSetup& setup, std::vector<Cone> cones, Stages& st
   return c;
 }
 
+/// One placement's attempt reported on `stages`; with `placed`, cones placed before
+/// are not mapped again (the caller's check refuses them).
+ConeAttempt run_attempt(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages,
+                        double lattice_factor, bool smooth_inverted,
+                        const std::vector<std::vector<Cone>>* placed = nullptr) {
+  ConeAttempt attempt;
+  try {
+    attempt.cones = placed_cones(setup, placement, stages, lattice_factor);
+    if (placed && placed_before(*attempt.cones, *placed)) return attempt;
+    attempt.candidate = cone_quads(setup, *attempt.cones, stages, lattice_factor, smooth_inverted);
+  } catch (const Error& e) {
+    attempt.error = e.what();
+  } catch (...) {
+    attempt.unexpected = std::current_exception();  // rethrown by the caller, in order
+  }
+  return attempt;
+}
+
 }  // namespace
 
 Candidate cone_attempt(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages,
@@ -115,18 +133,14 @@ std::vector<ConeAttempt> cone_attempts_side_by_side(const FormSetup& setup,
                                                     double lattice_factor, bool smooth_inverted) {
   std::vector<ConeAttempt> out(placements.size());
   parallel_for_index(placements.size(), [&](std::size_t i) {
-    ConeAttempt& attempt = out[i];
-    const ProgressCallback record = [&attempt](const std::string& message) { attempt.messages.push_back(message); };
-    Stages stages(attempt.timings, record);
-    try {
-      attempt.cones = placed_cones(setup, placements[i], stages, lattice_factor);
-      attempt.candidate = cone_quads(setup, *attempt.cones, stages, lattice_factor, smooth_inverted);
-      stages.close();
-    } catch (const Error& e) {
-      attempt.error = e.what();
-    } catch (...) {
-      attempt.unexpected = std::current_exception();  // rethrown by the caller, in order
-    }
+    std::vector<std::string> messages;
+    std::vector<std::pair<std::string, double>> timings;
+    const ProgressCallback record = [&messages](const std::string& message) { messages.push_back(message); };
+    Stages stages(timings, record);
+    out[i] = run_attempt(setup, placements[i], stages, lattice_factor, smooth_inverted);
+    stages.close();
+    out[i].messages = std::move(messages);
+    out[i].timings = std::move(timings);
   });
   return out;
 }
@@ -227,22 +241,16 @@ std::optional<ConeCandidate> first_sound_placement(const FormSetup& setup, const
   const std::size_t width = std::max<std::size_t>(1, std::min<std::size_t>(placements_side_by_side, worker_threads()));
   bool found = false;
   for (std::size_t start = 0; start < placements.size() && attempts_left > 0 && !found; start += width) {
-    if (width <= 1) {
-      --attempts_left;
-      try {
-        last = cone_attempt(setup, placements[start], stages, placed, lattice_factor, options.smoothing);
-      } catch (const Error& e) {
-        if (failure.empty()) failure = e.what();
-        continue;
-      }
-      found = sound(last->quality, input, options.acceptance);
-      continue;
-    }
     const std::size_t count = std::min({width, placements.size() - start, static_cast<std::size_t>(attempts_left)});
-    const std::vector<ConePlacementOptions> batch(placements.begin() + static_cast<std::ptrdiff_t>(start),
-                                                  placements.begin() + static_cast<std::ptrdiff_t>(start + count));
-    stages.announce(fmt::format("trying {} cone placements side by side", count));
-    std::vector<ConeAttempt> attempts = cone_attempts_side_by_side(setup, batch, lattice_factor, options.smoothing);
+    std::vector<ConeAttempt> attempts;
+    if (count == 1) {  // on this thread, its progress as it goes
+      attempts.push_back(run_attempt(setup, placements[start], stages, lattice_factor, options.smoothing, &placed));
+    } else {
+      const std::vector<ConePlacementOptions> batch(placements.begin() + static_cast<std::ptrdiff_t>(start),
+                                                    placements.begin() + static_cast<std::ptrdiff_t>(start + count));
+      stages.announce(fmt::format("trying {} cone placements side by side", count));
+      attempts = cone_attempts_side_by_side(setup, batch, lattice_factor, options.smoothing);
+    }
     for (ConeAttempt& attempt : attempts) {
       if (attempt.unexpected) std::rethrow_exception(attempt.unexpected);
       --attempts_left;

@@ -35,7 +35,6 @@ class Stages {
     if (progress_)
       for (const std::string& message : messages) progress_(message);
     out_.insert(out_.end(), timings.begin(), timings.end());
-    last_ = std::chrono::steady_clock::now();
   }
   /// Closes the running stage (if any).
   void close() {
