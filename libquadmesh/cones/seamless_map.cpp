@@ -431,9 +431,66 @@ std::vector<std::vector<double>> rounding_options(const std::vector<int>& v, con
   auto other = [&](int i) { return nearest(i) + (z[i] >= nearest(i) ? 1.0 : -1.0); };
   if (v.size() == 1)
     return {{nearest(v[0])}, {other(v[0])}, {2 * nearest(v[0]) - other(v[0])}};
+  auto beyond = [&](int i) { return 2 * nearest(i) - other(i); };
   return {{nearest(v[0]), nearest(v[1])}, {other(v[0]), nearest(v[1])}, {nearest(v[0]), other(v[1])},
-          {other(v[0]), other(v[1])}};
+          {other(v[0]), other(v[1])}, {beyond(v[0]), nearest(v[1])}, {nearest(v[0]), beyond(v[1])}};
 }
+
+/// A value this far from an integer after a solve is at a fraction.
+constexpr double fraction_tolerance = 1e-3;
+
+/// The fixed values and the seam rows may determine a value not fixed yet: the
+/// rows around a vertex whose cut paths turn by a half turn relative to each other
+/// give 2 t_a = (1 - i) t_b, say (a handle's two loops), and once t_b is an integer
+/// of odd coordinate sum, t_a is a half-integer no rounding makes integer (the
+/// seams open). Denominators are powers of 1 - i, so such a value lies on a half
+/// or a quarter. `determined` holds the values seen determined so far (which
+/// values are determined depends on which are fixed, not on their integers, so a
+/// rounding's options share it).
+class DeterminedValues {
+ public:
+  DeterminedValues(std::vector<int> candidates, std::size_t variables)
+      : candidates_(std::move(candidates)), determined_(variables, 0) {}
+
+  /// The candidates not in `fixed` that the fixed values determine at other than an
+  /// integer, in solution z. A candidate on a half or a quarter is tested by fixing
+  /// it to its nearest integer: the seams open if it is determined (one low-rank
+  /// solve; a free value lands that close to a fraction only by chance).
+  std::size_t at_fractions(PenaltySolver& solver, const std::vector<char>& fixed, const Eigen::VectorXd& z,
+                           SeamlessMapReport& report) {
+    std::size_t count = 0;
+    for (int v : candidates_) {
+      const auto sv = static_cast<std::size_t>(v);
+      if (fixed[sv]) continue;
+      const double off = std::abs(z[v] - std::round(z[v]));
+      if (off < fraction_tolerance) continue;
+      if (!determined_[sv]) {
+        const double quarters = 4 * z[v];
+        if (std::abs(quarters - std::round(quarters)) > 4 * max_consistent_residual) continue;
+        solver.fix(v, std::round(z[v]));
+        const double residual = solver.max_residual(solver.solve_low_rank());
+        ++report.solves;
+        solver.unfix(1);
+        if (residual < max_consistent_residual) continue;
+        determined_[sv] = 1;
+      }
+      ++count;
+    }
+    return count;
+  }
+
+ private:
+  std::vector<int> candidates_;
+  std::vector<char> determined_;
+};
+
+/// What one rounding option leaves: whether the seams still close, the values it
+/// makes determined at fractions, the boundary segments of length 0.
+struct RoundingOutcome {
+  bool consistent = true;
+  std::size_t fractions = 0;
+  std::size_t collapsed = 0;
+};
 
 /// Greedy rounding, phase by phase: fix every candidate already integer and the
 /// one nearest to an integer, solve, repeat. Returns the final solution; `fixed`
@@ -444,6 +501,9 @@ Eigen::VectorXd quantize(PenaltySolver& solver, const std::vector<std::vector<in
   Eigen::VectorXd z = solver.solve();
   ++report.solves;
   std::vector<char> fixed(static_cast<std::size_t>(z.size()), 0);
+  std::vector<int> all;
+  for (const std::vector<int>& candidates : phases) all.insert(all.end(), candidates.begin(), candidates.end());
+  DeterminedValues determined(all, fixed.size());
   for (const std::vector<int>& candidates : phases)
     while (true) {
       int nearest = -1;
@@ -468,28 +528,36 @@ Eigen::VectorXd quantize(PenaltySolver& solver, const std::vector<std::vector<in
       std::vector<int> step;
       for (int v : paired ? std::vector<int>{nearest, nearest ^ 1} : std::vector<int>{nearest})
         if (!fixed[static_cast<std::size_t>(v)]) step.push_back(v);
-      // the nearest integers, unless they put two corners on one lattice point (a
-      // boundary segment of length 0) where the next ones do not; when every option
-      // does, the one that collapses fewest
-      const std::size_t before = collapsed_segments(segments, z);
+      // the nearest integers, unless they determine another value at a fraction or
+      // put two corners on one lattice point (a boundary segment of length 0) where
+      // the next ones do not; when every option does, the one with fewest
+      // fractions, then fewest collapsed segments
+      for (int v : step) fixed[static_cast<std::size_t>(v)] = 1;
+      const RoundingOutcome before{true, determined.at_fractions(solver, fixed, z, report),
+                                   collapsed_segments(segments, z)};
       const std::vector<std::vector<double>> options = rounding_options(step, z);
       Eigen::VectorXd next;
       std::size_t chosen = 0;
-      std::size_t least = 0;
+      RoundingOutcome best;
       for (std::size_t o = 0; o < options.size(); ++o) {
         for (std::size_t i = 0; i < step.size(); ++i) solver.fix(step[i], options[o][i]);
         next = solver.solve_low_rank();
         ++report.solves;
-        const std::size_t harm = collapsed_segments(segments, next);
+        RoundingOutcome outcome;
         // an integer other than the nearest may contradict values fixed before (the
         // seams then open): never taken
-        const bool consistent = o == 0 || solver.max_residual(next) < max_consistent_residual;
-        if (consistent && harm <= before) {
+        outcome.consistent = o == 0 || solver.max_residual(next) < max_consistent_residual;
+        if (outcome.consistent) {
+          outcome.collapsed = collapsed_segments(segments, next);
+          outcome.fractions = determined.at_fractions(solver, fixed, next, report);
+        }
+        if (outcome.consistent && outcome.fractions <= before.fractions && outcome.collapsed <= before.collapsed) {
           chosen = o;
           break;
         }
-        if (o == 0 || (consistent && harm < least)) {
-          least = harm;
+        if (o == 0 || (outcome.consistent && std::pair(outcome.fractions, outcome.collapsed) <
+                                                 std::pair(best.fractions, best.collapsed))) {
+          best = outcome;
           chosen = o;
         }
         solver.unfix(step.size());
@@ -499,11 +567,10 @@ Eigen::VectorXd quantize(PenaltySolver& solver, const std::vector<std::vector<in
           ++report.solves;
         }
       }
-      if (chosen > 0) ++report.corners_kept_apart;
+      if (chosen > 0) ++report.other_integers;
       for (std::size_t i = 0; i < step.size(); ++i) {
         const int v = step[i];
         const double value = options[chosen][i];
-        fixed[static_cast<std::size_t>(v)] = 1;
         integers.push_back({v, value});
         ++report.integer_values;
         report.max_rounding = std::max(report.max_rounding, std::abs(z[v] - value));

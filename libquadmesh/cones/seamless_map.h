@@ -27,8 +27,9 @@ struct SeamlessMapReport {
   std::size_t inverted_triangles = 0;  ///< image area <= 0
   int stiffening_rounds = 0;        ///< re-solves with folded triangles weighing more
   /// roundings that took the next integer, not the nearest, to keep two corners off
-  /// one lattice point (cones/internal/boundary_segments.h)
-  std::size_t corners_kept_apart = 0;
+  /// one lattice point (cones/internal/boundary_segments.h) or a value the integers
+  /// determine off a half or a quarter
+  std::size_t other_integers = 0;
 };
 
 /// Per triangle corner, the value of the wedge it belongs to. `u` from

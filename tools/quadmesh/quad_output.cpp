@@ -225,7 +225,9 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
                         {"cone_route_failure", result.cone_route_failure},
                         {"integer_values", result.cone_map.integer_values},
                         {"max_rounding", result.cone_map.max_rounding},
-                        {"stiffening_rounds", result.cone_map.stiffening_rounds}};
+                        {"stiffening_rounds", result.cone_map.stiffening_rounds},
+                        {"other_integers", result.cone_map.other_integers},
+                        {"wide_corners_split", result.wide_corners_split}};
   j["zero_order_sum_doubled"] = result.zeros.doubled_order_sum;
   j["flipped_triangles_before"] = result.zeros.flipped_count;
   const Quantization& qz = result.quantization;

@@ -2,6 +2,7 @@
 
 #include "libquadmesh/cones/cone_map.h"
 #include "libquadmesh/cones/cone_placement.h"
+#include "libquadmesh/cones/wide_corners.h"
 #include "libquadmesh/param/internal/surface_adjacency.h"
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/core/parallel.h"
@@ -63,7 +64,9 @@ constexpr const char* placed_before_error = "the same cones as a placement tried
 Candidate cone_quads(const FormSetup& setup, std::vector<Cone> cones, Stages& stages, double lattice_factor,
                      bool smooth_inverted) {
   QuadMeshResult r = setup.preamble;
-  const TriangleSoup& soup = setup.soup;
+  // the corners the cone metric would open to a fold are bisected first
+  TriangleSoup soup = setup.soup;
+  r.wide_corners_split = split_wide_corners(soup, cones);
   const double size = setup.preamble.size_requested * lattice_factor;
   const SurfaceAdjacency adjacency = surface_adjacency(soup);
   r.cones = std::move(cones);

@@ -40,13 +40,17 @@ EdgeIncidence edge_incidence(const TriangleSoup& soup) {
 }
 
 int split_edge_at_midpoint(TriangleSoup& soup, const EdgeIncidence& inc, int e, std::vector<char>& touched) {
+  return split_edge_at(soup, inc, e, 0.5, touched);
+}
+
+int split_edge_at(TriangleSoup& soup, const EdgeIncidence& inc, int e, double t, std::vector<char>& touched) {
   const auto first = static_cast<std::size_t>(inc.offsets[static_cast<std::size_t>(e)]);
   const auto last = static_cast<std::size_t>(inc.offsets[static_cast<std::size_t>(e) + 1]);
   for (std::size_t i = first; i < last; ++i)
     if (touched[static_cast<std::size_t>(inc.halfedges[i] / 3)]) return -1;
   const auto [a, b] = inc.edges[static_cast<std::size_t>(e)];
   const int m = static_cast<int>(soup.points.size());
-  soup.points.push_back((soup.points[static_cast<std::size_t>(a)] + soup.points[static_cast<std::size_t>(b)]) / 2);
+  soup.points.push_back((1 - t) * soup.points[static_cast<std::size_t>(a)] + t * soup.points[static_cast<std::size_t>(b)]);
   if (!soup.point_labels.empty()) soup.point_labels.push_back(-1);
   for (std::size_t i = first; i < last; ++i) {
     const int h = inc.halfedges[i];

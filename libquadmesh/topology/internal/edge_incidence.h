@@ -39,4 +39,7 @@ EdgeIncidence edge_incidence(const TriangleSoup& soup);
 /// triangles and the new ones are marked in `touched` (sized like the triangles).
 int split_edge_at_midpoint(TriangleSoup& soup, const EdgeIncidence& inc, int e, std::vector<char>& touched);
 
+/// The same at the point (1 - t) edges[e][0] + t edges[e][1], 0 < t < 1.
+int split_edge_at(TriangleSoup& soup, const EdgeIncidence& inc, int e, double t, std::vector<char>& touched);
+
 }  // namespace qm

@@ -1,0 +1,37 @@
+// Triangle corners the cone metric opens too wide to map (method.md section 11).
+//
+// The flat cone metric moves all of the surface's curvature to the cones: a vertex
+// in n quads gets the total angle n pi/2, and its triangles' corners open in
+// proportion, a corner of angle a at a vertex of total angle A to about
+// a n (pi/2) / A. A corner opened to pi or more cannot be mapped without folding
+// its triangle, whatever the quantization does: a valence-5 cone at the midpoint
+// of a split edge (a 161-degree corner becomes 201 degrees: pig), a 270-degree
+// corner on a coarse polygon spanned by one or two triangles. Such corners are
+// bisected before the map: the edge opposite them is split where the corner's
+// bisector meets it (the new point lies on the edge, so the surface is unchanged).
+#pragma once
+
+#include "libquadmesh/cones/cone_set.h"
+#include "libquadmesh/core/triangle_soup.h"
+
+namespace qm {
+
+/// The widest a corner may open (radians): below pi with a margin, as the fit
+/// bends the metric's angles near cones.
+constexpr double max_opened_corner = 0.95 * M_PI;
+
+/// Per triangle corner (3 f + k), the angle the cone metric opens it to: its angle
+/// times n pi/2 over its vertex's total angle, n from quads_per_vertex.
+std::vector<double> opened_corners(const TriangleSoup& soup, const std::vector<int>& quads);
+
+/// Splits the edge opposite every corner at a cone (a vertex in other than 4
+/// quads inside, 2 on the boundary: a regular vertex keeps about its own angles)
+/// opened wider than `max_opened` (radians),
+/// pass after pass until none is (at most 8 passes); returns the splits. Points
+/// keep their indices (the cones stay where they are); new points are regular.
+/// CAD curve edges are split with their curve. Precondition: an oriented manifold
+/// soup; `cones` valid for it (quads_per_vertex).
+std::size_t split_wide_corners(TriangleSoup& soup, const std::vector<Cone>& cones,
+                               double max_opened = max_opened_corner);
+
+}  // namespace qm
