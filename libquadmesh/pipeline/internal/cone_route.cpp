@@ -7,6 +7,7 @@
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/core/parallel.h"
 #include "libquadmesh/pipeline/internal/attempt.h"
+#include "libquadmesh/pipeline/internal/deviation_budget.h"
 #include "libquadmesh/pipeline/internal/quad_improvement.h"
 #include "libquadmesh/quality/hausdorff.h"
 #include "libquadmesh/quality/size_band.h"
@@ -311,6 +312,21 @@ ConeCandidate cone_candidate(const FormSetup& setup, const QuadMeshOptions& opti
   return std::move(*cones);
 }
 
+/// The cone candidate as its quads would be written (quad_improvement.h): the
+/// worst quads smoothed, corners moved onto S where the quads cut across it (to the
+/// tolerance the Abel route refines to), corners moved towards right angles; its
+/// quality and size band measured again. The cones' quads are not refined, so
+/// their distance from S is judged after the fitting, as the written quads' is.
+void improve_as_written(ConeCandidate& cones, const QuadMeshOptions& options, double diagonal, SurfaceTopology input,
+                        Stages& stages) {
+  Candidate& c = cones.candidate;
+  if (!sound(c.quality, input, options.acceptance) || c.result.improved) return;
+  if (options.max_deviation >= 0) c.result.max_deviation = deviation_tolerance(options, diagonal, c.result);
+  improve_quads(c.result, options, stages);
+  c.quality = assess_candidate(c.result);
+  cones.band = size_band(c.result);
+}
+
 }  // namespace
 
 bool cones_first(const TriangleSoup& soup, const QuadMeshOptions& options) {
@@ -323,6 +339,7 @@ ConesFirst try_cones_first(const FormSetup& setup, const QuadMeshOptions& option
   if (!cones_first(setup.soup, options)) return out;
   try {
     ConeCandidate cones = cone_candidate(setup, options, input, stages);
+    improve_as_written(cones, options, setup.diagonal, input, stages);
     const QuadMeshResult& r = cones.candidate.result;
     const bool enough = sound(cones.candidate.quality, input, options.acceptance) &&
                         cones.band.share_in_band >= size_band_goal && corner_mismatches(r) == 0 &&
@@ -351,6 +368,7 @@ ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOpt
   }
   try {
     ConeCandidate tried = first.tried ? std::move(*first.tried) : cone_candidate(setup, options, input, stages);
+    improve_as_written(tried, options, setup.diagonal, input, stages);
     Candidate& cones = tried.candidate;
     const double cones_band = tried.band.share_in_band;
     const std::size_t cones_corners = corner_mismatches(cones.result);
@@ -363,7 +381,7 @@ ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOpt
       return outcome;
     }
     // nor farther from S than the criterion allows (the Abel quads are refined
-    // where they deviate, the cones' not yet)
+    // where they deviate, the cones' only fitted)
     const double distance = relative_hausdorff(cones.result);
     if (distance > options.acceptance.max_hausdorff_relative) {
       outcome.failure = fmt::format("the cones' quads are {:.2g}% of the diagonal from the surface (at most {:.2g}% "

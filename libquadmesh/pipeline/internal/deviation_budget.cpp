@@ -33,13 +33,16 @@ double min_scaled_jacobian(const LatticeQuads& quads) {
 
 }  // namespace
 
+double deviation_tolerance(const QuadMeshOptions& options, double diagonal, const QuadMeshResult& r) {
+  return options.max_deviation_relative > 0 ? options.max_deviation_relative * diagonal
+         : options.max_deviation > 0        ? options.max_deviation
+                                            : default_tolerance_fraction * r.size * std::sqrt(r.base_density);
+}
+
 void refine_where_deviating(Candidate& best_candidate, const QuadMeshOptions& options, double diagonal,
                             Stages& stages, const std::function<Candidate(double density)>& rerun) {
   QuadMeshResult& best = best_candidate.result;
-  const double tolerance = options.max_deviation_relative > 0 ? options.max_deviation_relative * diagonal
-                           : options.max_deviation > 0        ? options.max_deviation
-                                                              : default_tolerance_fraction * best.size *
-                                                                    std::sqrt(best.base_density);  // of the requested size
+  const double tolerance = deviation_tolerance(options, diagonal, best);
   auto refine = [&](QuadMeshResult& a) {
     DeviationRefinementOptions refinement;
     refinement.tolerance = tolerance;

@@ -19,6 +19,11 @@ namespace qm {
 /// moved by the fitting, which move by about one quad edge.
 inline constexpr double within_reach = 16.0;
 
+/// The deviation tolerance of `options` for quads `r`: QuadMeshOptions::max_deviation,
+/// _relative (of `diagonal`, the input's bounding box's), else half the size (of
+/// the base lattice's).
+double deviation_tolerance(const QuadMeshOptions& options, double diagonal, const QuadMeshResult& r);
+
 /// Refines `best` (the chosen attempt) to the deviation tolerance of `options`
 /// (QuadMeshOptions::max_deviation, _relative, else half the size), then tries
 /// coarser base lattices (`rerun(density)`: the same attempt with density x the

@@ -19,6 +19,8 @@ QuadSmoothingReport smooth_worst(QuadMeshResult& result) {
 }
 
 void improve_quads(QuadMeshResult& best, const QuadMeshOptions& options, Stages& stages) {
+  if (best.improved) return;
+  best.improved = true;
   if (options.smoothing && !best.quads.quads.empty()) {
     stages.next("smoothing", "smoothing the worst quads");
     const QuadSmoothingReport earlier = best.smoothing;
@@ -29,10 +31,13 @@ void improve_quads(QuadMeshResult& best, const QuadMeshOptions& options, Stages&
     }
   }
   std::vector<char> fitted(best.quads.points.size(), 0);  // the corners the fitting moved stay
+  // the cone route's quads are not refined: their deviation is not measured
+  // before the fitting, which measures it
+  const bool refined = best.singularities != "cones";
   if (best.max_deviation > 0 && !best.quads.quads.empty() &&
-      best.refinement.deviation_after <= within_reach * best.max_deviation) {
+      (!refined || best.refinement.deviation_after <= within_reach * best.max_deviation)) {
     stages.next("fitting", "moving corners onto S where the quads cut across it");
-    if (best.smoothing.moved_points == 0 && best.refinement.deviation_after <= best.max_deviation) {
+    if (refined && best.smoothing.moved_points == 0 && best.refinement.deviation_after <= best.max_deviation) {
       // the refinement measured these very quads (same samples, same tolerance)
       // within the tolerance: the fitting would measure that again and stop
       best.fitting.deviation_before = best.fitting.deviation_after = best.refinement.deviation_after;

@@ -15,9 +15,11 @@ QuadSmoothingReport smooth_worst(QuadMeshResult& result);
 
 /// Smooths the worst quads (QuadMeshOptions::smoothing; a smoothing done before,
 /// `best.smoothing`, is added to the report), fits the corners onto S
-/// where the quads cut across it (when refined, and the deviation is within reach),
+/// where the quads cut across it (with a tolerance, `best.max_deviation` > 0: when
+/// refined, where the deviation is within reach; the cone route's quads always),
 /// then moves every regular interior corner towards right angles. The topology of
-/// `best.quads` does not change.
+/// `best.quads` does not change. Once: sets `best.improved`, and does nothing when
+/// it is set (the cone route improves its candidate to judge it as written).
 void improve_quads(QuadMeshResult& best, const QuadMeshOptions& options, Stages& stages);
 
 }  // namespace qm
