@@ -21,7 +21,7 @@ double ring_mean(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, co
 }  // namespace
 
 ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const std::vector<Cone>& cones,
-                 double size) {
+                 double size, RoundingOrder order) {
   QM_ASSERT(size > 0 && adjacency.soup == &soup);
   ConeMap out;
   out.quads = quads_per_vertex(adjacency, cones);
@@ -47,7 +47,7 @@ ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, co
   for (std::size_t v = 0; v < out.quads.size(); ++v)
     if (!adjacency.boundary_vertex[v] && out.quads[v] != 4)
       scale[static_cast<Eigen::Index>(v)] = ring_mean(soup, adjacency, out.u, v);
-  out.map = seamless_map(soup, adjacency, scale, out.field, out.cut, out.quads, size, out.report);
+  out.map = seamless_map(soup, adjacency, scale, out.field, out.cut, out.quads, size, out.report, order);
   return out;
 }
 

@@ -19,11 +19,12 @@ struct ConeMap {
   SeamlessMapReport report;
 };
 
-/// `size` the target quad edge (> 0). Throws qm::Error: bad_input when the cones
+/// `size` the target quad edge (> 0); `order` the quantization's (seamless_map.h).
+/// Throws qm::Error: bad_input when the cones
 /// break Gauss-Bonnet or name no vertex; unsupported when a boundary loop cannot
 /// be aligned with the field (several boundary loops need cones placed for it:
 /// the placement stage); solver when a solve fails.
 ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const std::vector<Cone>& cones,
-                 double size);
+                 double size, RoundingOrder order = RoundingOrder::cones_first);
 
 }  // namespace qm

@@ -168,9 +168,13 @@ std::vector<Translation> add_seams(const TriangleSoup& soup, const SurfaceAdjace
 /// number of quads other than 2; a cut translation ending at a cone is (1 - i^q) times
 /// the cone's position, integer once the position is, while an integer translation
 /// may leave the cone at a half-integer point), then the boundary lines, then the
-/// cut translations.
+/// cut translations; or (RoundingOrder::translations_first) the translations, the
+/// cones, the lines (a value left on a half is avoided as it is rounded: quantize).
 struct IntegerCandidates {
   std::vector<std::vector<int>> phases;
+  /// per phase, whether its values are lattice vectors (a cone's position, a
+  /// translation: both coordinates rounded in one step) or lines (one value)
+  std::vector<char> paired;
   /// per variable, the candidate it equals (times same_sign) by the seam rows (-1:
   /// none but itself): set from that candidate's integer at the end
   std::vector<int> same_as;
@@ -179,7 +183,8 @@ struct IntegerCandidates {
 
 IntegerCandidates integer_candidates(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                                      const CrossField& field, const CutGraph& cut, const std::vector<int>& quads,
-                                     const std::vector<Translation>& translations, int variables) {
+                                     const std::vector<Translation>& translations, int variables,
+                                     RoundingOrder order) {
   IntegerCandidates out;
   out.same_as.assign(static_cast<std::size_t>(variables), -1);
   out.same_sign.assign(static_cast<std::size_t>(variables), 1.0);
@@ -245,6 +250,12 @@ IntegerCandidates integer_candidates(const TriangleSoup& soup, const SurfaceAdja
       out.same_as[v] = translations[r].variable + turned_from[k][c];
       out.same_sign[v] = turned_sign[k][c];
     }
+  }
+  out.paired = {1, 0, 1};
+  if (order == RoundingOrder::translations_first) {
+    std::swap(phases[0], phases[2]);  // translations, lines, cones
+    std::swap(phases[1], phases[2]);  // translations, cones, lines
+    out.paired = {1, 1, 0};
   }
   return out;
 }
@@ -495,17 +506,17 @@ struct RoundingOutcome {
 /// Greedy rounding, phase by phase: fix every candidate already integer and the
 /// one nearest to an integer, solve, repeat. Returns the final solution; `fixed`
 /// gets the values made integer.
-Eigen::VectorXd quantize(PenaltySolver& solver, const std::vector<std::vector<int>>& phases,
-                         const BoundarySegments& segments, std::vector<std::pair<int, double>>& integers,
-                         SeamlessMapReport& report) {
+Eigen::VectorXd quantize(PenaltySolver& solver, const IntegerCandidates& order, const BoundarySegments& segments,
+                         std::vector<std::pair<int, double>>& integers, SeamlessMapReport& report) {
+  const std::vector<std::vector<int>>& phases = order.phases;
   Eigen::VectorXd z = solver.solve();
   ++report.solves;
   std::vector<char> fixed(static_cast<std::size_t>(z.size()), 0);
   std::vector<int> all;
   for (const std::vector<int>& candidates : phases) all.insert(all.end(), candidates.begin(), candidates.end());
   DeterminedValues determined(all, fixed.size());
-  for (const std::vector<int>& candidates : phases)
-    while (true) {
+  for (std::size_t phase = 0; phase < phases.size(); ++phase)
+    for (const std::vector<int>& candidates = phases[phase];;) {
       int nearest = -1;
       double nearest_distance = 1;
       for (int v : candidates) {
@@ -524,7 +535,7 @@ Eigen::VectorXd quantize(PenaltySolver& solver, const std::vector<std::vector<in
       if (nearest < 0) break;
       // a cone's position and a translation are lattice vectors: both of their
       // coordinates are rounded in one step (one solve, not two)
-      const bool paired = &candidates != &phases[1];
+      const bool paired = order.paired[phase] != 0;
       std::vector<int> step;
       for (int v : paired ? std::vector<int>{nearest, nearest ^ 1} : std::vector<int>{nearest})
         if (!fixed[static_cast<std::size_t>(v)]) step.push_back(v);
@@ -608,7 +619,7 @@ void stiffen(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const 
 
 FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u,
                      const CrossField& field, const CutGraph& cut, const std::vector<int>& quads, double size,
-                     SeamlessMapReport& report) {
+                     SeamlessMapReport& report, RoundingOrder order) {
   QM_ASSERT(size > 0);
   report = {};
   std::vector<Row> rows;
@@ -630,9 +641,10 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   energy(H, b);
   PenaltySolver solver(variables, std::move(H), std::move(b), std::move(rows));
   std::vector<std::pair<int, double>> integers;
-  const IntegerCandidates candidates = integer_candidates(soup, adjacency, field, cut, quads, translations, variables);
-  Eigen::VectorXd z = quantize(solver, candidates.phases,
-                               boundary_segments(soup, adjacency, field, cut, quads, scales), integers, report);
+  const IntegerCandidates candidates =
+      integer_candidates(soup, adjacency, field, cut, quads, translations, variables, order);
+  Eigen::VectorXd z =
+      quantize(solver, candidates, boundary_segments(soup, adjacency, field, cut, quads, scales), integers, report);
   // stiffening [Bommes et al. 2009]: triangles left folded, and those around
   // them, weigh more in the fit, until none is folded. Not when the integer values
   // contradict the seams (no stiffness closes them), nor once the folds have not

@@ -32,11 +32,20 @@ struct SeamlessMapReport {
   std::size_t other_integers = 0;
 };
 
+/// The order the quantization makes values integer in, phase by phase. The cones'
+/// positions first, then the boundary lines, then the cut translations: a
+/// translation ending at a cone is (1 - i^q) times its position, integer once the
+/// position is. The translations first, then the cones, then the lines: where the
+/// cones and lines rounded first leave the translations (and so the boundary
+/// segments a cut ends in) far from their fit and the map folds (fertility's
+/// coarse hole polygons: half of its boundary segments more than a quad off).
+enum class RoundingOrder { cones_first, translations_first };
+
 /// Per triangle corner, the value of the wedge it belongs to. `u` from
 /// cone_metric, `size` the target quad edge in the surface's units (> 0).
 /// Throws qm::Error (solver) when the system cannot be factored.
 FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u,
                      const CrossField& field, const CutGraph& cut, const std::vector<int>& quads, double size,
-                     SeamlessMapReport& report);
+                     SeamlessMapReport& report, RoundingOrder order = RoundingOrder::cones_first);
 
 }  // namespace qm

@@ -141,6 +141,7 @@ struct QuadMeshResult {
   std::string singularities = "abel";  ///< the route of the quads: "abel" or "cones"
   std::vector<Cone> cones;             ///< the cones placed (the cone route), by vertex of `surface`
   SeamlessMapReport cone_map;          ///< the cone route's quantization
+  std::string rounding_order = "cones_first";  ///< the cone route's quantization order (seamless_map.h RoundingOrder)
   std::size_t wide_corners_split = 0;  ///< the cone route's edges split to bisect corners the metric opens too wide
   double size_band_share = std::numeric_limits<double>::quiet_NaN();       ///< quads within [0.5, 2] x size (quality/size_band.h); NaN: not measured
   double abel_size_band_share = std::numeric_limits<double>::quiet_NaN();  ///< the Abel result's, when automatic measured it; NaN: not measured

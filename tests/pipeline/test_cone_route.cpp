@@ -68,6 +68,25 @@ TEST_CASE("the rounding leaves no translation its integers make a half-integer" 
   CHECK(map.max_seam_residual < 1e-9);
 }
 
+TEST_CASE("a placement whose map folds with the cones rounded first is sound with the translations first" *
+          doctest::test_suite("slow")) {
+  // fertility's fourth placement: rounded cones, lines, translations, its map keeps
+  // 9 folded triangles (half of fertility's boundary segments end more than a quad
+  // from their fit); rounded translations, cones, lines, none, and the quads are
+  // sound with every corner right
+  std::vector<std::pair<std::string, double>> timings;
+  Stages stages(timings, {});
+  const FormSetup setup = fertility_setup(stages);
+  const SurfaceTopology input = topology_of(setup.soup);
+  std::vector<std::vector<Cone>> placed;
+  const Candidate fourth = cone_attempt(setup, cone_placements()[3], stages, placed, 1.0, true);
+  CHECK(fourth.result.rounding_order == "translations_first");
+  CHECK(fourth.result.cone_map.inverted_triangles == 0);
+  CHECK(fourth.result.cone_map.max_seam_residual < 1e-9);
+  CHECK(sound(fourth.quality, input, AcceptanceCriteria{}));
+  CHECK(fourth.quality.topology.euler_characteristic == -9);
+}
+
 TEST_CASE("cone placements tried side by side give what each gives alone, bit for bit, with their progress") {
   // two threads: the first two placements at once on the plate with two holes;
   // each attempt must equal cone_attempt's (no state shared between them), and a

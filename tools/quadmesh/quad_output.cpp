@@ -227,6 +227,7 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
                         {"max_rounding", result.cone_map.max_rounding},
                         {"stiffening_rounds", result.cone_map.stiffening_rounds},
                         {"other_integers", result.cone_map.other_integers},
+                        {"rounding_order", result.rounding_order},
                         {"wide_corners_split", result.wide_corners_split}};
   j["zero_order_sum_doubled"] = result.zeros.doubled_order_sum;
   j["flipped_triangles_before"] = result.zeros.flipped_count;

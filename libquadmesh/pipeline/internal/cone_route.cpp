@@ -61,6 +61,10 @@ bool placed_before(const std::vector<Cone>& cones, const std::vector<std::vector
 
 constexpr const char* placed_before_error = "the same cones as a placement tried before";
 
+/// A seamless map whose seam rows are off by more than this (lattice units) has
+/// opened: its quads do not close across the cuts.
+constexpr double max_seam_residual = 1e-6;
+
 /// The quads of `cones` (cone_attempt after the placement).
 Candidate cone_quads(const FormSetup& setup, std::vector<Cone> cones, Stages& stages, double lattice_factor,
                      bool smooth_inverted) {
@@ -75,7 +79,20 @@ Candidate cone_quads(const FormSetup& setup, std::vector<Cone> cones, Stages& st
   for (const Cone& c : r.cones) corners += adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)];
   stages.next("cone_map", fmt::format("the seamless map with {} corner and {} interior cones", corners,
                                       static_cast<int>(r.cones.size()) - corners));
-  const ConeMap map = cone_map(soup, adjacency, r.cones, size);
+  ConeMap map = cone_map(soup, adjacency, r.cones, size);
+  if (map.report.inverted_triangles > 0) {
+    // the translations rounded first instead (seamless_map.h): kept when its seams
+    // close and it folds less
+    stages.next("cone_map", fmt::format("{} folded triangles: the seamless map again, its cut translations made "
+                                        "integer first",
+                                        map.report.inverted_triangles));
+    ConeMap other = cone_map(soup, adjacency, r.cones, size, RoundingOrder::translations_first);
+    if (other.report.max_seam_residual < max_seam_residual &&
+        other.report.inverted_triangles < map.report.inverted_triangles) {
+      map = std::move(other);
+      r.rounding_order = "translations_first";
+    }
+  }
   r.cone_map = map.report;
   stages.next("extraction", "extracting the quads across the rotated cuts");
   r.quads = extract_lattice_quads(soup, adjacency, map.map, r.extraction);
