@@ -20,6 +20,7 @@
 #pragma once
 
 #include "libquadmesh/cones/cone_set.h"
+#include "libquadmesh/cones/seamless_map.h"
 
 #include <Eigen/Core>
 
@@ -73,6 +74,10 @@ struct ConePlacementOptions {
   /// ...keeping the loops' turns within this (radians, summed) of whole quarter
   /// turns, or no worse than they were.
   double relaxation_alignment_slack = 0.02;
+  /// Not the placement's own: the order the seamless map of these cones rounds its
+  /// values in (seamless_map.h), so that a route can try the placements again in
+  /// the other order.
+  RoundingOrder rounding = RoundingOrder::cones_first;
 };
 
 /// The corner cones: boundary vertices whose angle is away from pi.

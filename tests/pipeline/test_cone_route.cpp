@@ -78,9 +78,19 @@ TEST_CASE("a placement whose map folds with the cones rounded first is sound wit
   Stages stages(timings, {});
   const FormSetup setup = fertility_setup(stages);
   const SurfaceTopology input = topology_of(setup.soup);
+  ConePlacementOptions placement = cone_placements()[3];
   std::vector<std::vector<Cone>> placed;
-  const Candidate fourth = cone_attempt(setup, cone_placements()[3], stages, placed, 1.0, true);
+  const Candidate cones_first = cone_attempt(setup, placement, stages, placed, 1.0, true);
+  CHECK(cones_first.result.rounding_order == "cones_first");
+  CHECK(cones_first.result.cone_map.inverted_triangles > 0);
+  CHECK(!sound(cones_first.quality, input, AcceptanceCriteria{}));
+  placement.rounding = RoundingOrder::translations_first;
+  placed.clear();
+  const Candidate fourth = cone_attempt(setup, placement, stages, placed, 1.0, true);
   CHECK(fourth.result.rounding_order == "translations_first");
+  REQUIRE(fourth.result.cones.size() == cones_first.result.cones.size());
+  for (std::size_t i = 0; i < fourth.result.cones.size(); ++i)
+    CHECK(fourth.result.cones[i].vertex == cones_first.result.cones[i].vertex);
   CHECK(fourth.result.cone_map.inverted_triangles == 0);
   CHECK(fourth.result.cone_map.max_seam_residual < 1e-9);
   CHECK(sound(fourth.quality, input, AcceptanceCriteria{}));

@@ -61,13 +61,9 @@ bool placed_before(const std::vector<Cone>& cones, const std::vector<std::vector
 
 constexpr const char* placed_before_error = "the same cones as a placement tried before";
 
-/// A seamless map whose seam rows are off by more than this (lattice units) has
-/// opened: its quads do not close across the cuts.
-constexpr double max_seam_residual = 1e-6;
-
 /// The quads of `cones` (cone_attempt after the placement).
 Candidate cone_quads(const FormSetup& setup, std::vector<Cone> cones, Stages& stages, double lattice_factor,
-                     bool smooth_inverted) {
+                     bool smooth_inverted, RoundingOrder order) {
   QuadMeshResult r = setup.preamble;
   // the corners the cone metric would open to a fold are bisected first
   TriangleSoup soup = setup.soup;
@@ -79,20 +75,8 @@ Candidate cone_quads(const FormSetup& setup, std::vector<Cone> cones, Stages& st
   for (const Cone& c : r.cones) corners += adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)];
   stages.next("cone_map", fmt::format("the seamless map with {} corner and {} interior cones", corners,
                                       static_cast<int>(r.cones.size()) - corners));
-  ConeMap map = cone_map(soup, adjacency, r.cones, size);
-  if (map.report.inverted_triangles > 0) {
-    // the translations rounded first instead (seamless_map.h): kept when its seams
-    // close and it folds less
-    stages.next("cone_map", fmt::format("{} folded triangles: the seamless map again, its cut translations made "
-                                        "integer first",
-                                        map.report.inverted_triangles));
-    ConeMap other = cone_map(soup, adjacency, r.cones, size, RoundingOrder::translations_first);
-    if (other.report.max_seam_residual < max_seam_residual &&
-        other.report.inverted_triangles < map.report.inverted_triangles) {
-      map = std::move(other);
-      r.rounding_order = "translations_first";
-    }
-  }
+  const ConeMap map = cone_map(soup, adjacency, r.cones, size, order);
+  if (order == RoundingOrder::translations_first) r.rounding_order = "translations_first";
   r.cone_map = map.report;
   stages.next("extraction", "extracting the quads across the rotated cuts");
   r.quads = extract_lattice_quads(soup, adjacency, map.map, r.extraction);
@@ -130,7 +114,7 @@ ConeAttempt run_attempt(const FormSetup& setup, const ConePlacementOptions& plac
   try {
     attempt.cones = placed_cones(setup, placement, stages, lattice_factor);
     if (placed && placed_before(*attempt.cones, *placed)) return attempt;
-    attempt.candidate = cone_quads(setup, *attempt.cones, stages, lattice_factor, smooth_inverted);
+    attempt.candidate = cone_quads(setup, *attempt.cones, stages, lattice_factor, smooth_inverted, placement.rounding);
   } catch (const Error& e) {
     attempt.error = e.what();
   } catch (...) {
@@ -146,7 +130,7 @@ Candidate cone_attempt(const FormSetup& setup, const ConePlacementOptions& place
   std::vector<Cone> cones = placed_cones(setup, placement, stages, lattice_factor);
   if (placed_before(cones, placed)) throw Error(ErrorCode::unsupported, placed_before_error);
   placed.push_back(cones);
-  return cone_quads(setup, std::move(cones), stages, lattice_factor, smooth_inverted);
+  return cone_quads(setup, std::move(cones), stages, lattice_factor, smooth_inverted, placement.rounding);
 }
 
 std::vector<ConeAttempt> cone_attempts_side_by_side(const FormSetup& setup,
@@ -250,12 +234,14 @@ constexpr double finer_lattice_below = 1.1;
 /// threw (`failure` then says why the first did).
 std::optional<ConeCandidate> first_sound_placement(const FormSetup& setup, const QuadMeshOptions& options,
                                                    SurfaceTopology input, Stages& stages, double lattice_factor,
-                                                   int& attempts_left, std::string& failure) {
+                                                   int& attempts_left, std::string& failure,
+                                                   RoundingOrder rounding = RoundingOrder::cones_first) {
   std::optional<Candidate> last;
   std::vector<std::vector<Cone>> placed;
   const InteriorCones interior = options.cone_placement == ConePlacement::cross_field ? InteriorCones::cross_field
                                                                                      : InteriorCones::greedy;
-  const std::vector<ConePlacementOptions> placements = cone_placements(interior);
+  std::vector<ConePlacementOptions> placements = cone_placements(interior);
+  for (ConePlacementOptions& p : placements) p.rounding = rounding;
   // with two threads, two placements at a time (each a seamless map of up to
   // several seconds, on one core); the first sound one in order is kept, as one
   // at a time would, and what a placement after it found is dropped
@@ -306,6 +292,19 @@ ConeCandidate cone_candidate(const FormSetup& setup, const QuadMeshOptions& opti
   int every_placement = static_cast<int>(cone_placements().size());
   std::optional<ConeCandidate> cones =
       first_sound_placement(setup, options, input, stages, 1.0, every_placement, failure);
+  if (!cones || !sound(cones->candidate.quality, input, options.acceptance)) {
+    // the cones and lines rounded first can leave the cut translations, and the
+    // boundary segments a cut ends in, far from their fit (seamless_map.h): every
+    // placement again with the translations rounded first; the last pass's
+    // candidate stands when this one finds nothing sound either
+    stages.announce("no placement gave sound quads: the placements again, the seamless maps rounding the cut "
+                    "translations first");
+    int second_pass = static_cast<int>(cone_placements().size());
+    std::string ignored;
+    std::optional<ConeCandidate> again = first_sound_placement(setup, options, input, stages, 1.0, second_pass,
+                                                               ignored, RoundingOrder::translations_first);
+    if (again && (!cones || sound(again->candidate.quality, input, options.acceptance))) cones = std::move(again);
+  }
   if (!cones) throw Error(ErrorCode::unsupported, failure);
   // sound, but some quads a little larger than the acceptance allows: where the
   // lattice falls against the cone metric's sizes is a matter of rounding, so the
@@ -329,19 +328,24 @@ ConeCandidate cone_candidate(const FormSetup& setup, const QuadMeshOptions& opti
   return std::move(*cones);
 }
 
-/// The cone candidate as its quads would be written (quad_improvement.h): the
-/// worst quads smoothed, corners moved onto S where the quads cut across it (to the
-/// tolerance the Abel route refines to), corners moved towards right angles; its
-/// quality and size band measured again. The cones' quads are not refined, so
-/// their distance from S is judged after the fitting, as the written quads' is.
-void improve_as_written(ConeCandidate& cones, const QuadMeshOptions& options, double diagonal, SurfaceTopology input,
-                        Stages& stages) {
+/// The cone candidate judged as its quads would be written: a sound one gets the
+/// deviation tolerance the Abel route refines to (the written quads' fitting uses
+/// it), and when its quads are farther from S than the acceptance allows, the
+/// improvement the written quads get (quad_improvement.h: the worst quads smoothed,
+/// corners moved onto S where the quads cut across it, corners towards right
+/// angles) before its quality, size band and distance are measured again. The
+/// cones' quads are not refined, so their distance is judged after the fitting.
+void judge_as_written(ConeCandidate& cones, const QuadMeshOptions& options, double diagonal, SurfaceTopology input,
+                      Stages& stages) {
   Candidate& c = cones.candidate;
-  if (!sound(c.quality, input, options.acceptance) || c.result.improved) return;
+  if (!std::isnan(cones.distance) || !sound(c.quality, input, options.acceptance)) return;
+  cones.distance = relative_hausdorff(c.result);
   if (options.max_deviation >= 0) c.result.max_deviation = deviation_tolerance(options, diagonal, c.result);
+  if (cones.distance <= options.acceptance.max_hausdorff_relative) return;
   improve_quads(c.result, options, stages);
   c.quality = assess_candidate(c.result);
   cones.band = size_band(c.result);
+  cones.distance = relative_hausdorff(c.result);
 }
 
 }  // namespace
@@ -356,11 +360,11 @@ ConesFirst try_cones_first(const FormSetup& setup, const QuadMeshOptions& option
   if (!cones_first(setup.soup, options)) return out;
   try {
     ConeCandidate cones = cone_candidate(setup, options, input, stages);
-    improve_as_written(cones, options, setup.diagonal, input, stages);
+    judge_as_written(cones, options, setup.diagonal, input, stages);
     const QuadMeshResult& r = cones.candidate.result;
     const bool enough = sound(cones.candidate.quality, input, options.acceptance) &&
                         cones.band.share_in_band >= size_band_goal && corner_mismatches(r) == 0 &&
-                        relative_hausdorff(r) <= options.acceptance.max_hausdorff_relative;
+                        cones.distance <= options.acceptance.max_hausdorff_relative;
     if (enough)
       out.kept = std::move(cones.candidate);
     else
@@ -385,7 +389,7 @@ ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOpt
   }
   try {
     ConeCandidate tried = first.tried ? std::move(*first.tried) : cone_candidate(setup, options, input, stages);
-    improve_as_written(tried, options, setup.diagonal, input, stages);
+    judge_as_written(tried, options, setup.diagonal, input, stages);
     Candidate& cones = tried.candidate;
     const double cones_band = tried.band.share_in_band;
     const std::size_t cones_corners = corner_mismatches(cones.result);
@@ -399,7 +403,7 @@ ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOpt
     }
     // nor farther from S than the criterion allows (the Abel quads are refined
     // where they deviate, the cones' only fitted)
-    const double distance = relative_hausdorff(cones.result);
+    const double distance = tried.distance;
     if (distance > options.acceptance.max_hausdorff_relative) {
       outcome.failure = fmt::format("the cones' quads are {:.2g}% of the diagonal from the surface (at most {:.2g}% "
                                     "allowed)",

@@ -10,6 +10,7 @@
 #include "libquadmesh/pipeline/internal/stages.h"
 #include "libquadmesh/quality/size_band.h"
 
+#include <cmath>
 #include <exception>
 #include <limits>
 #include <optional>
@@ -81,6 +82,9 @@ bool cones_replace(const CandidateQuality& cones, double cones_band, double abel
 struct ConeCandidate {
   Candidate candidate;
   SizeBand band;
+  /// two-sided Hausdorff distance of its quads from S / the diagonal, as judged
+  /// (NaN until measured; measured when sound)
+  double distance = std::nan("");
 };
 
 /// Singularities::automatic: when `best` (the Abel result) has fewer than
