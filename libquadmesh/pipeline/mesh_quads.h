@@ -128,6 +128,9 @@ struct QuadMeshResult {
   QuadAngleSmoothingReport angle_smoothing;  ///< then every regular interior point, towards right angles
   QuadFittingReport fitting;      ///< corners moved onto S where the quads cut across it (max_deviation > 0)
   bool improved = false;          ///< smoothed and fitted (pipeline/internal/quad_improvement.h): not again
+  /// the cone route: its quads' two-sided distance from S when it judged them
+  /// (absolute; < 0: not measured)
+  double judged_deviation = -1;
   std::vector<std::pair<std::string, double>> timings;  ///< seconds per stage
   /// Edges of the input longer than the target size, split (forms/long_edges.h);
   /// when > 0 the input as it is was meshed too, and the better result kept.

@@ -340,12 +340,15 @@ void judge_as_written(ConeCandidate& cones, const QuadMeshOptions& options, doub
   Candidate& c = cones.candidate;
   if (!std::isnan(cones.distance) || !sound(c.quality, input, options.acceptance)) return;
   cones.distance = relative_hausdorff(c.result);
+  c.result.judged_deviation = cones.distance * diagonal;
   if (options.max_deviation >= 0) c.result.max_deviation = deviation_tolerance(options, diagonal, c.result);
   if (cones.distance <= options.acceptance.max_hausdorff_relative) return;
+  c.result.judged_deviation = -1;  // the fitting measures it again
   improve_quads(c.result, options, stages);
   c.quality = assess_candidate(c.result);
   cones.band = size_band(c.result);
   cones.distance = relative_hausdorff(c.result);
+  c.result.judged_deviation = cones.distance * diagonal;
 }
 
 }  // namespace

@@ -31,13 +31,18 @@ void improve_quads(QuadMeshResult& best, const QuadMeshOptions& options, Stages&
     }
   }
   std::vector<char> fitted(best.quads.points.size(), 0);  // the corners the fitting moved stay
-  // the cone route's quads are not refined: their deviation is not measured
-  // before the fitting, which measures it
-  const bool refined = best.singularities != "cones";
+  // the cone route's quads are not refined: the route measured their two-sided
+  // distance from S when it judged them (or not), and the smoothing keeps its
+  // points on S, so within the tolerance there is nothing to fit
+  const bool cones = best.singularities == "cones";
+  const bool judged_within = cones && best.judged_deviation >= 0 && best.judged_deviation <= best.max_deviation;
   if (best.max_deviation > 0 && !best.quads.quads.empty() &&
-      (!refined || best.refinement.deviation_after <= within_reach * best.max_deviation)) {
+      (cones || best.refinement.deviation_after <= within_reach * best.max_deviation)) {
     stages.next("fitting", "moving corners onto S where the quads cut across it");
-    if (refined && best.smoothing.moved_points == 0 && best.refinement.deviation_after <= best.max_deviation) {
+    if (judged_within) {
+      best.fitting.deviation_before = best.fitting.deviation_after = best.judged_deviation;
+    } else if (!cones && best.smoothing.moved_points == 0 &&
+               best.refinement.deviation_after <= best.max_deviation) {
       // the refinement measured these very quads (same samples, same tolerance)
       // within the tolerance: the fitting would measure that again and stop
       best.fitting.deviation_before = best.fitting.deviation_after = best.refinement.deviation_after;

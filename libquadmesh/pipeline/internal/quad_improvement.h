@@ -16,7 +16,8 @@ QuadSmoothingReport smooth_worst(QuadMeshResult& result);
 /// Smooths the worst quads (QuadMeshOptions::smoothing; a smoothing done before,
 /// `best.smoothing`, is added to the report), fits the corners onto S
 /// where the quads cut across it (with a tolerance, `best.max_deviation` > 0: when
-/// refined, where the deviation is within reach; the cone route's quads always),
+/// refined, where the deviation is within reach; the cone route's quads unless it
+/// judged them within the tolerance, `best.judged_deviation`),
 /// then moves every regular interior corner towards right angles. The topology of
 /// `best.quads` does not change. Once: sets `best.improved`, and does nothing when
 /// it is set (the cone route improves its candidate to judge it as written).
