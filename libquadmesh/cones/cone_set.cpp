@@ -46,13 +46,9 @@ std::vector<double> vertex_curvature(const TriangleSoup& soup, const SurfaceAdja
   const std::size_t nV = soup.points.size();
   std::vector<double> k(nV);
   for (std::size_t v = 0; v < nV; ++v) k[v] = adjacency.boundary_vertex[v] ? M_PI : 2 * M_PI;
-  for (const Triangle& t : soup.triangles)
-    for (int i = 0; i < 3; ++i) {
-      const Vec3& p = soup.points[static_cast<std::size_t>(t[i])];
-      const Vec3 a = soup.points[static_cast<std::size_t>(t[(i + 1) % 3])] - p;
-      const Vec3 b = soup.points[static_cast<std::size_t>(t[(i + 2) % 3])] - p;
-      k[static_cast<std::size_t>(t[i])] -= std::atan2(a.cross(b).norm(), a.dot(b));
-    }
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f)
+    for (int i = 0; i < 3; ++i)
+      k[static_cast<std::size_t>(soup.triangles[f][static_cast<std::size_t>(i)])] -= corner_angle(soup, f, i);
   return k;
 }
 

@@ -12,28 +12,7 @@
 namespace qm {
 
 namespace {
-
 constexpr int max_passes = 8;
-
-/// The angle of triangle t at its corner k (radians).
-double corner_angle(const TriangleSoup& soup, const Triangle& t, int k) {
-  const Vec3& p = soup.points[static_cast<std::size_t>(t[k])];
-  const Vec3 a = soup.points[static_cast<std::size_t>(t[(k + 1) % 3])] - p;
-  const Vec3 b = soup.points[static_cast<std::size_t>(t[(k + 2) % 3])] - p;
-  return std::atan2(a.cross(b).norm(), a.dot(b));
-}
-
-/// Replaces the CAD curve edge a-b, if there is one, by a-m and m-b.
-void split_curve_edge(TriangleSoup& soup, int a, int b, int m) {
-  for (std::size_t i = 0; i < soup.cad.edges.size(); ++i) {
-    const CurveEdge whole = soup.cad.edges[i];
-    if (std::minmax(whole.a, whole.b) != std::minmax(a, b)) continue;
-    soup.cad.edges[i] = CurveEdge{whole.a, m, whole.curve};
-    soup.cad.edges.push_back(CurveEdge{m, whole.b, whole.curve});
-    return;
-  }
-}
-
 }  // namespace
 
 std::vector<double> opened_corners(const TriangleSoup& soup, const std::vector<int>& quads) {
@@ -41,7 +20,7 @@ std::vector<double> opened_corners(const TriangleSoup& soup, const std::vector<i
   std::vector<double> total(soup.points.size(), 0.0);
   for (std::size_t f = 0; f < soup.triangles.size(); ++f)
     for (int k = 0; k < 3; ++k) {
-      angle[3 * f + static_cast<std::size_t>(k)] = corner_angle(soup, soup.triangles[f], k);
+      angle[3 * f + static_cast<std::size_t>(k)] = corner_angle(soup, f, k);
       total[static_cast<std::size_t>(soup.triangles[f][static_cast<std::size_t>(k)])] +=
           angle[3 * f + static_cast<std::size_t>(k)];
     }
@@ -53,12 +32,15 @@ std::vector<double> opened_corners(const TriangleSoup& soup, const std::vector<i
   return angle;
 }
 
-std::size_t split_wide_corners(TriangleSoup& soup, const std::vector<Cone>& cones, double max_opened) {
+WideCornerSplits split_wide_corners(TriangleSoup& soup, const std::vector<Cone>& cones, double max_opened) {
   QM_ASSERT(max_opened > 0);
   if (!soup.point_labels.empty()) soup.point_labels.resize(soup.points.size(), -1);
-  std::size_t splits = 0;
+  WideCornerSplits out;
+  SurfaceAdjacency& adjacency = out.adjacency;
+  bool current = false;  // adjacency describes the soup as it is
   for (int pass = 0; pass < max_passes; ++pass) {
-    const SurfaceAdjacency adjacency = surface_adjacency(soup);
+    adjacency = surface_adjacency(soup);
+    current = true;
     const std::vector<int> quads = quads_per_vertex(adjacency, cones);
     const std::vector<double> opened = opened_corners(soup, quads);
     // the widest corners at cones first (a regular vertex keeps about its angles);
@@ -72,6 +54,7 @@ std::size_t split_wide_corners(TriangleSoup& soup, const std::vector<Cone>& cone
     if (wide.empty()) break;
     std::sort(wide.begin(), wide.end(), std::greater<>());
     const EdgeIncidence inc = edge_incidence(soup);
+    CurveEdgeIndex curves = curve_edge_index(soup);
     std::vector<char> touched(soup.triangles.size(), 0);
     std::size_t pass_splits = 0;
     for (const auto& [angle, corner] : wide) {
@@ -87,15 +70,15 @@ std::size_t split_wide_corners(TriangleSoup& soup, const std::vector<Cone>& cone
       const Vec3& apex = soup.points[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])];
       const double to_a = (soup.points[static_cast<std::size_t>(a)] - apex).norm();
       const double to_b = (soup.points[static_cast<std::size_t>(b)] - apex).norm();
-      const int m = split_edge_at(soup, inc, e, to_a / (to_a + to_b), touched);
-      if (m < 0) continue;  // next pass
-      split_curve_edge(soup, a, b, m);
+      if (split_edge_at(soup, inc, e, to_a / (to_a + to_b), touched, curves) < 0) continue;  // next pass
       ++pass_splits;
     }
     if (pass_splits == 0) break;
-    splits += pass_splits;
+    out.splits += pass_splits;
+    current = false;
   }
-  return splits;
+  if (!current) adjacency = surface_adjacency(soup);
+  return out;
 }
 
 }  // namespace qm

@@ -13,6 +13,7 @@
 
 #include "libquadmesh/cones/cone_set.h"
 #include "libquadmesh/core/triangle_soup.h"
+#include "libquadmesh/param/internal/surface_adjacency.h"
 
 namespace qm {
 
@@ -24,14 +25,20 @@ constexpr double max_opened_corner = 0.95 * M_PI;
 /// times n pi/2 over its vertex's total angle, n from quads_per_vertex.
 std::vector<double> opened_corners(const TriangleSoup& soup, const std::vector<int>& quads);
 
+struct WideCornerSplits {
+  std::size_t splits = 0;
+  SurfaceAdjacency adjacency;  ///< of the soup as the splits leave it
+};
+
 /// Splits the edge opposite every corner at a cone (a vertex in other than 4
 /// quads inside, 2 on the boundary: a regular vertex keeps about its own angles)
 /// opened wider than `max_opened` (radians),
-/// pass after pass until none is (at most 8 passes); returns the splits. Points
+/// pass after pass until none is (at most 8 passes); returns the splits and the
+/// soup's adjacency afterwards (built once per pass: the caller need not). Points
 /// keep their indices (the cones stay where they are); new points are regular.
 /// CAD curve edges are split with their curve. Precondition: an oriented manifold
 /// soup; `cones` valid for it (quads_per_vertex).
-std::size_t split_wide_corners(TriangleSoup& soup, const std::vector<Cone>& cones,
+WideCornerSplits split_wide_corners(TriangleSoup& soup, const std::vector<Cone>& cones,
                                double max_opened = max_opened_corner);
 
 }  // namespace qm

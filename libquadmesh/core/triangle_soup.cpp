@@ -1,6 +1,9 @@
 #include "libquadmesh/core/triangle_soup.h"
 
+#include <Eigen/Geometry>
 #include <fmt/format.h>
+
+#include <cmath>
 
 namespace qm {
 
@@ -14,6 +17,15 @@ std::string describe_triangle(const TriangleSoup& soup, int f) {
   const Triangle& t = soup.triangles[static_cast<std::size_t>(f)];
   return fmt::format("triangle {} (vertices {}, {}, {})", soup.triangle_label(f),
                      soup.point_label(t[0]), soup.point_label(t[1]), soup.point_label(t[2]));
+}
+
+double angle_between(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
+
+double corner_angle(const TriangleSoup& soup, std::size_t f, int k) {
+  const Triangle& t = soup.triangles[f];
+  const Vec3& p = soup.points[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])];
+  return angle_between(soup.points[static_cast<std::size_t>(t[static_cast<std::size_t>((k + 1) % 3)])] - p,
+                       soup.points[static_cast<std::size_t>(t[static_cast<std::size_t>((k + 2) % 3)])] - p);
 }
 
 double mean_edge_length(const TriangleSoup& soup) {

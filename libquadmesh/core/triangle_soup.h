@@ -74,6 +74,13 @@ std::string describe_vertex(const TriangleSoup& soup, int i);
 /// "triangle 7 (vertices 1, 2, 3)": how messages name a triangle of the soup.
 std::string describe_triangle(const TriangleSoup& soup, int f);
 
+/// The angle between a and b (radians, in [0, pi]): atan2 of |a x b| and a . b,
+/// which keeps full precision near 0 and pi, where acos does not.
+double angle_between(const Vec3& a, const Vec3& b);
+
+/// The angle of triangle f at its corner k (radians).
+double corner_angle(const TriangleSoup& soup, std::size_t f, int k);
+
 /// Mean edge length of a soup (each edge counted once per triangle side; 0 without
 /// triangles).
 double mean_edge_length(const TriangleSoup& soup);

@@ -21,12 +21,13 @@ std::size_t split_boundary_chords(TriangleSoup& soup) {
     std::vector<char> on_boundary(soup.points.size(), 0);
     for (std::size_t e = 0; e < inc.edge_count(); ++e)
       if (inc.is_boundary(static_cast<int>(e))) on_boundary[inc.edges[e][0]] = on_boundary[inc.edges[e][1]] = 1;
+    CurveEdgeIndex curves = curve_edge_index(soup);
     std::vector<char> touched(soup.triangles.size(), 0);
     std::size_t pass = 0;
     for (std::size_t e = 0; e < inc.edge_count(); ++e) {
       const auto [a, b] = inc.edges[e];
       if (inc.valence(static_cast<int>(e)) != 2 || !on_boundary[a] || !on_boundary[b]) continue;
-      if (split_edge_at_midpoint(soup, inc, static_cast<int>(e), touched) < 0) continue;  // next pass
+      if (split_edge_at_midpoint(soup, inc, static_cast<int>(e), touched, curves) < 0) continue;  // next pass
       ++pass;
     }
     splits += pass;

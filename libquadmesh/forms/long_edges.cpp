@@ -43,21 +43,12 @@ std::size_t split_long_edges(TriangleSoup& soup, double max_length) {
     }
     if (wanted.empty()) return splits;
     std::sort(wanted.begin(), wanted.end(), std::greater<>());
-    std::map<std::pair<int, int>, std::size_t> curve_edge;
-    for (std::size_t i = 0; i < soup.cad.edges.size(); ++i)
-      curve_edge[std::minmax(soup.cad.edges[i].a, soup.cad.edges[i].b)] = i;
+    CurveEdgeIndex curves = curve_edge_index(soup);
     std::vector<char> touched(soup.triangles.size(), 0);
     std::size_t pass = 0;
     for (const auto& [l, e] : wanted) {
       if (e < 0) continue;
-      const int m = split_edge_at_midpoint(soup, inc, e, touched);
-      if (m < 0) continue;  // next pass
-      const auto [a, b] = inc.edges[static_cast<std::size_t>(e)];
-      if (const auto it = curve_edge.find(std::minmax(a, b)); it != curve_edge.end()) {
-        const CurveEdge whole = soup.cad.edges[it->second];
-        soup.cad.edges[it->second] = CurveEdge{whole.a, m, whole.curve};
-        soup.cad.edges.push_back(CurveEdge{m, whole.b, whole.curve});
-      }
+      if (split_edge_at_midpoint(soup, inc, e, touched, curves) < 0) continue;  // next pass
       ++pass;
     }
     splits += pass;

@@ -212,7 +212,7 @@ std::vector<ZeroVertex> boundary_corners(const TriangleSoup& soup, const Surface
     };
     auto turning_at = [&](std::size_t i, double distance) {
       const Vec3 a = reach(i, n - 1, distance) - point(i), b = reach(i, 1, distance) - point(i);
-      return M_PI - std::atan2(a.cross(b).norm(), a.dot(b));
+      return M_PI - angle_between(a, b);
     };
     std::vector<double> turning(n), local(n);
     for (std::size_t i = 0; i < n; ++i) {

@@ -66,7 +66,7 @@ Vec3 along_loop(const TriangleSoup& soup, const std::vector<int>& loop, const st
 }
 
 double angle_deg(const Vec3& a, const Vec3& b) {
-  return std::atan2(a.cross(b).norm(), a.dot(b)) * 180 / M_PI;
+  return angle_between(a, b) * 180 / M_PI;
 }
 
 }  // namespace

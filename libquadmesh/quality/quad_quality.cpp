@@ -27,8 +27,7 @@ const double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kRightAngleDeg = 90.0;
 
 double angle_between_deg(const Vec3& a, const Vec3& b) {
-  // atan2 keeps full precision near 0 and 180 degrees, where acos does not
-  return std::atan2(a.cross(b).norm(), a.dot(b)) * kDegrees;
+  return angle_between(a, b) * kDegrees;
 }
 
 /// Value at fraction p of the sorted values, interpolated linearly between order

@@ -16,7 +16,7 @@ TriangleQuality triangle_quality(const TriangleSoup& soup) {
     for (int k = 0; k < 3; ++k) {
       const Vec3 a = soup.points[t[(k + 1) % 3]] - soup.points[t[k]];
       const Vec3 b = soup.points[t[(k + 2) % 3]] - soup.points[t[k]];
-      const double angle = std::atan2(a.cross(b).norm(), a.dot(b)) * 180.0 / M_PI;
+      const double angle = angle_between(a, b) * 180.0 / M_PI;
       lo = std::min(lo, angle);
       hi = std::max(hi, angle);
     }

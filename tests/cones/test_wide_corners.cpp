@@ -49,8 +49,13 @@ TEST_CASE("a valence-5 cone beside a grid diagonal gets its wide corner bisected
   CHECK(widest_cone_corner(soup, cones) * 180 / M_PI == doctest::Approx(177.71 * 1.25).epsilon(1e-3));
 
   const TriangleSoup before = soup;
-  const std::size_t splits = split_wide_corners(soup, cones);
+  const WideCornerSplits result = split_wide_corners(soup, cones);
+  const std::size_t splits = result.splits;
   CHECK(splits >= 1);
+  // the adjacency handed back is the split soup's
+  const SurfaceAdjacency fresh = surface_adjacency(soup);
+  CHECK(result.adjacency.vertex_faces == fresh.vertex_faces);
+  CHECK(result.adjacency.boundary_vertex == fresh.boundary_vertex);
   CHECK(widest_cone_corner(soup, cones) <= max_opened_corner);
   // the old points keep their indices and places; each split of an interior edge
   // adds one point and two triangles; the new points lie on the unit square
@@ -63,7 +68,7 @@ TEST_CASE("a valence-5 cone beside a grid diagonal gets its wide corner bisected
     CHECK(std::max(soup.points[v].x(), soup.points[v].y()) < 1.0);
   }
   // nothing more to split
-  CHECK(split_wide_corners(soup, cones) == 0);
+  CHECK(split_wide_corners(soup, cones).splits == 0);
 
   // the map folds a triangle there at one of these sizes without the split, none
   // at any of them with it

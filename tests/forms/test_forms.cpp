@@ -9,6 +9,7 @@
 #include "libquadmesh/forms/remesh.h"
 #include "libquadmesh/forms/symmetric_forms.h"
 #include "libquadmesh/topology/applicability.h"
+#include "libquadmesh/topology/internal/edge_incidence.h"
 #include "tests/support/test_meshes.h"
 
 #include <doctest/doctest.h>
@@ -78,10 +79,29 @@ TEST_CASE("doubling: counts, closedness, mirror-symmetric cotangent weights") {
 TEST_CASE("boundary chords are split until none is left; topology is unchanged") {
   // a 3 x 3 grid of split squares: its corner triangles are ears (their inner edges are chords)
   TriangleSoup soup = test::grid(3);
+  // one chord is also a CAD curve edge: it is split with its curve
+  const EdgeIncidence inc = edge_incidence(soup);
+  std::vector<char> on_boundary(soup.points.size(), 0);
+  for (std::size_t e = 0; e < inc.edge_count(); ++e)
+    if (inc.is_boundary(static_cast<int>(e))) on_boundary[inc.edges[e][0]] = on_boundary[inc.edges[e][1]] = 1;
+  std::array<int, 2> chord{-1, -1};
+  for (std::size_t e = 0; e < inc.edge_count() && chord[0] < 0; ++e)
+    if (inc.valence(static_cast<int>(e)) == 2 && on_boundary[inc.edges[e][0]] && on_boundary[inc.edges[e][1]])
+      chord = inc.edges[e];
+  REQUIRE(chord[0] >= 0);
+  soup.cad.edges.push_back({chord[0], chord[1], 5});
   const AnalyzedSurface before = analyze_topology(soup);
   const std::size_t splits = split_boundary_chords(soup);
   CHECK(splits > 0);
   CHECK(split_boundary_chords(soup) == 0);
+  REQUIRE(soup.cad.edges.size() == 2);
+  const CurveEdge first = soup.cad.edges[0], second = soup.cad.edges[1];
+  CHECK(first.curve == 5);
+  CHECK(second.curve == 5);
+  CHECK(first.a == chord[0]);
+  CHECK(first.b == second.a);
+  CHECK(second.b == chord[1]);
+  CHECK(soup.points[first.b] == (soup.points[chord[0]] + soup.points[chord[1]]) / 2);
   const AnalyzedSurface after = analyze_topology(soup);
   CHECK(after.report.euler_characteristic == before.report.euler_characteristic);
   CHECK(after.report.faces == before.report.faces + 2 * splits);

@@ -90,7 +90,7 @@ std::vector<double> ring_angles(const TriangleSoup& soup, const VertexRing& ring
   for (std::size_t k = 0; k < ring.faces.size(); ++k) {
     const Vec3 a = soup.points[static_cast<std::size_t>(ring.neighbours[k])] - p;
     const Vec3 b = soup.points[static_cast<std::size_t>(ring.neighbours[(k + 1) % n])] - p;
-    angles.push_back(std::atan2(a.cross(b).norm(), a.dot(b)));
+    angles.push_back(angle_between(a, b));
   }
   return angles;
 }

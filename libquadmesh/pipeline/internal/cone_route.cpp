@@ -67,9 +67,10 @@ Candidate cone_quads(const FormSetup& setup, std::vector<Cone> cones, Stages& st
   QuadMeshResult r = setup.preamble;
   // the corners the cone metric would open to a fold are bisected first
   TriangleSoup soup = setup.soup;
-  r.wide_corners_split = split_wide_corners(soup, cones);
+  WideCornerSplits split = split_wide_corners(soup, cones);
+  r.wide_corners_split = split.splits;
   const double size = setup.preamble.size_requested * lattice_factor;
-  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  const SurfaceAdjacency adjacency = std::move(split.adjacency);
   r.cones = std::move(cones);
   int corners = 0;
   for (const Cone& c : r.cones) corners += adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)];

@@ -39,11 +39,39 @@ EdgeIncidence edge_incidence(const TriangleSoup& soup) {
   return inc;
 }
 
-int split_edge_at_midpoint(TriangleSoup& soup, const EdgeIncidence& inc, int e, std::vector<char>& touched) {
-  return split_edge_at(soup, inc, e, 0.5, touched);
+CurveEdgeIndex curve_edge_index(const TriangleSoup& soup) {
+  CurveEdgeIndex index;
+  for (std::size_t i = 0; i < soup.cad.edges.size(); ++i) {
+    const CurveEdge& c = soup.cad.edges[i];
+    index[{std::min(c.a, c.b), std::max(c.a, c.b)}] = i;
+  }
+  return index;
 }
 
-int split_edge_at(TriangleSoup& soup, const EdgeIncidence& inc, int e, double t, std::vector<char>& touched) {
+namespace {
+
+/// The CAD curve edge a-b, if there is one, replaced by a-m and m-b.
+void split_curve_edge(TriangleSoup& soup, CurveEdgeIndex& curves, int a, int b, int m) {
+  const auto it = curves.find({std::min(a, b), std::max(a, b)});
+  if (it == curves.end()) return;
+  const std::size_t i = it->second;
+  curves.erase(it);
+  const CurveEdge whole = soup.cad.edges[i];
+  soup.cad.edges[i] = CurveEdge{whole.a, m, whole.curve};
+  soup.cad.edges.push_back(CurveEdge{m, whole.b, whole.curve});
+  curves[{std::min(whole.a, m), std::max(whole.a, m)}] = i;
+  curves[{std::min(m, whole.b), std::max(m, whole.b)}] = soup.cad.edges.size() - 1;
+}
+
+}  // namespace
+
+int split_edge_at_midpoint(TriangleSoup& soup, const EdgeIncidence& inc, int e, std::vector<char>& touched,
+                           CurveEdgeIndex& curves) {
+  return split_edge_at(soup, inc, e, 0.5, touched, curves);
+}
+
+int split_edge_at(TriangleSoup& soup, const EdgeIncidence& inc, int e, double t, std::vector<char>& touched,
+                  CurveEdgeIndex& curves) {
   const auto first = static_cast<std::size_t>(inc.offsets[static_cast<std::size_t>(e)]);
   const auto last = static_cast<std::size_t>(inc.offsets[static_cast<std::size_t>(e) + 1]);
   for (std::size_t i = first; i < last; ++i)
@@ -56,14 +84,15 @@ int split_edge_at(TriangleSoup& soup, const EdgeIncidence& inc, int e, double t,
     const int h = inc.halfedges[i];
     const auto f = static_cast<std::size_t>(h / 3);
     const auto k = static_cast<std::size_t>(h % 3);
-    const Triangle t = soup.triangles[f];
-    const int x = t[k], y = t[(k + 1) % 3], c = t[(k + 2) % 3];
+    const Triangle tri = soup.triangles[f];
+    const int x = tri[k], y = tri[(k + 1) % 3], c = tri[(k + 2) % 3];
     soup.triangles[f] = {x, m, c};
     soup.triangles.push_back({m, y, c});
     if (!soup.triangle_labels.empty()) soup.triangle_labels.push_back(soup.triangle_labels[f]);
     touched[f] = 1;
     touched.push_back(1);
   }
+  split_curve_edge(soup, curves, a, b, m);
   return m;
 }
 
