@@ -122,12 +122,13 @@ class ConeCrowding {
 };
 
 /// Moves interior cones, one at a time, to where the field meets every boundary
-/// loop closest to a whole quarter turn (cross_field.h LoopTurns), within
+/// loop (and goes round every handle) closest to a whole quarter turn
+/// (cross_field.h LoopTurns: every row), within
 /// `rings` edges of where they are. Returns the largest turn left (radians).
 double align_loops_by_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const LoopTurns& model,
                             const std::vector<double>& curvature, const std::vector<char>& eligible, int rings,
                             int separation, std::vector<Cone>& cones) {
-  const std::size_t loops = adjacency.boundary_loops.size();
+  const std::size_t loops = model.rows();
   std::vector<double> kappa = target_curvature(adjacency, quads_per_vertex(adjacency, cones));
   Eigen::VectorXd rhs(static_cast<Eigen::Index>(kappa.size()));
   for (std::size_t v = 0; v < kappa.size(); ++v) rhs[static_cast<Eigen::Index>(v)] = kappa[v] - curvature[v];
@@ -209,9 +210,9 @@ void relax_cones_for_size(const TriangleSoup& soup, const SurfaceAdjacency& adja
                           const LoopTurns& model, const std::vector<double>& curvature,
                           const std::vector<double>& area, const std::vector<char>& eligible, int separation,
                           int passes, double slack, std::vector<Cone>& cones) {
-  const std::size_t loops = adjacency.boundary_loops.size();
+  const std::size_t loops = model.rows();
   auto alignment_cost = [&](const std::vector<Cone>& trial) {
-    if (loops < 2) return 0.0;
+    if (!model.steers()) return 0.0;
     const std::vector<double> kappa = target_curvature(adjacency, quads_per_vertex(adjacency, trial));
     Eigen::VectorXd rhs(static_cast<Eigen::Index>(kappa.size()));
     for (std::size_t v = 0; v < kappa.size(); ++v) rhs[static_cast<Eigen::Index>(v)] = kappa[v] - curvature[v];
@@ -423,8 +424,13 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
   // vertices nearer than cone_spacing quads to a placed interior cone are taken
   // too: two cones closer than that compete for the same lattice cells
   const double spacing = options.cone_spacing * size;
-  const bool several_loops = adjacency.boundary_loops.size() > 1;
-  const LoopTurns model = several_loops ? loop_turns(soup, adjacency, solver) : LoopTurns{};
+  // the turns the cones steer: the boundary loops' and, on a surface with
+  // handles, the handles' (cross_field.h LoopTurns)
+  const bool handles = 2 - euler_characteristic(adjacency) - static_cast<int>(adjacency.boundary_loops.size()) > 0;
+  const LoopTurns model = adjacency.boundary_loops.size() > 1 || (handles && options.steer_handles)
+                              ? loop_turns(soup, adjacency, solver, options.steer_handles)
+                              : LoopTurns{};
+  const bool steered = model.steers();
   if (!greedy) {
     // the field's singularities, all at once; they carry what the corners leave
     // when the field meets every corner as corner_cones counts it
@@ -458,7 +464,7 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
                               "a cone ({} of {} placed)",
                               options.boundary_distance, options.cone_spacing, cones.size(), cones.size() + std::abs(deficit)));
     int best = extreme;
-    if (several_loops) {
+    if (steered) {
       // among the vertices nearly as extreme, the one after which the field meets
       // the loops closest to whole quarter turns (the rest of D still spread)
       const std::vector<double> next = spread_targets(adjacency, quads, area, interior_area, deficit - step);
@@ -469,7 +475,7 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
         const auto vi = static_cast<Eigen::Index>(v);
         if (!eligible[v] || taken[v] || step * (u[vi] - u[extreme]) > options.extreme_tolerance) continue;
         double cost = 0;
-        for (std::size_t l = 0; l < adjacency.boundary_loops.size(); ++l)
+        for (std::size_t l = 0; l < model.rows(); ++l)
           if (static_cast<int>(l) != model.reference)
             cost += std::abs(quarter_turn_remainder(model.offset[l] - model.gradient[l].dot(rhs) -
                                                     step * quarter_turn * model.gradient[l][vi]));
@@ -487,13 +493,13 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
   // the cones moved to align the loops, then to even the quad sizes
   const auto settle = [&](std::vector<Cone>& set) {
     if (set.size() == corner_count) return;
-    if (several_loops)
+    if (steered)
       align_loops_by_cones(soup, adjacency, model, curvature, eligible, options.alignment_rings,
                            options.cone_separation, set);
     if (greedy && options.size_relaxation_passes > 0) {
       relax_cones_for_size(soup, adjacency, solver, model, curvature, area, eligible, options.cone_separation,
                            options.size_relaxation_passes, options.relaxation_alignment_slack, set);
-      if (several_loops)
+      if (steered)
         align_loops_by_cones(soup, adjacency, model, curvature, eligible, options.alignment_rings,
                              options.cone_separation, set);
     }

@@ -61,6 +61,11 @@ struct ConePlacementOptions {
   int alignment_rings = 4;
   /// ...keeping this many edges from the other interior cones.
   int cone_separation = 6;
+  /// The cones steer the field's turn round every handle too (cross_field.h
+  /// LoopTurns' handle rows): what the handles' trivial connection turns back, the
+  /// seamless map can only take as shear (fertility: 10.7 -> 3.8 degrees in its
+  /// first placement's map before quantization).
+  bool steer_handles = true;
   /// Then valence-5 and valence-3 cones in pairs, at the highest and the lowest
   /// u, while less than this share of the area has the metric's quad size within
   /// [0.5, 2] x the size (0: no pairs)...

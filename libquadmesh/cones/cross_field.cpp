@@ -195,56 +195,77 @@ ExtraTurn side_form_turn(const SideForm& form) {
 /// adding sum_k c_k form_k lowers J by sum_k c_k P_k, P_k the form's period along
 /// that loop (an intersection number). The loops whose periods are independent
 /// (fewest crossings first) give the square system sum_k c_k P_k = remainder(J).
-std::vector<double> handle_coefficients(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
-                                        const LocalFrames& frames, const Eigen::VectorXd& u, const FieldTree& tree,
-                                        const std::vector<SideForm>& forms, const CrossField& field) {
-  const ExtraTurn none = [](std::size_t, const EdgeCorner&) { return 0.0; };
+/// A loop round a handle: the tree's paths from the seed to the two triangles of
+/// an inner side the tree does not cross (side k of f, into g), closed by it.
+struct HandleLoop {
+  std::size_t f = 0;
+  int k = 0;
+  EdgeCorner g;
+  Eigen::VectorXd period;  ///< per handle form, its period along the loop
+  double crossings = 0;
+};
+
+/// The loops whose periods are independent, fewest crossings first (as many as
+/// there are forms, or fewer).
+std::vector<HandleLoop> independent_handle_loops(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                                 const FieldTree& tree, const std::vector<SideForm>& forms,
+                                                 const CrossField& field) {
   const std::size_t m = forms.size();
   std::vector<std::vector<double>> integral;
   for (const SideForm& form : forms) integral.push_back(tree_integral(soup, adjacency, tree, side_form_turn(form)));
-  struct Loop {
-    Eigen::VectorXd period;
-    double remainder = 0;
-    double crossings = 0;
-  };
-  std::vector<Loop> loops;
+  std::vector<HandleLoop> loops;
   for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
     const Triangle& t = soup.triangles[f];
     for (int k = 0; k < 3; ++k) {
       const EdgeCorner g = adjacency.find(t[(k + 1) % 3], t[k]);
       if (g.face < static_cast<int>(f) || field.tree_side[f][static_cast<std::size_t>(k)]) continue;
-      Loop loop{Eigen::VectorXd(static_cast<Eigen::Index>(m)), 0.0, 0.0};
+      HandleLoop loop{f, k, g, Eigen::VectorXd(static_cast<Eigen::Index>(m)), 0.0};
       for (std::size_t c = 0; c < m; ++c) {
         const double p = integral[c][f] + side_form_turn(forms[c])(f, g) - integral[c][static_cast<std::size_t>(g.face)];
         loop.period[static_cast<Eigen::Index>(c)] = std::round(p);
         loop.crossings += std::abs(std::round(p));
       }
       if (loop.crossings == 0) continue;
-      const double jump = field.angle[static_cast<std::size_t>(g.face)] -
-                          transported(soup, frames, u, f, k, g, field.angle[f], none);
-      loop.remainder = quarter_turn_remainder(jump);
       loops.push_back(std::move(loop));
     }
   }
-  std::stable_sort(loops.begin(), loops.end(), [](const Loop& a, const Loop& b) { return a.crossings < b.crossings; });
+  std::stable_sort(loops.begin(), loops.end(),
+                   [](const HandleLoop& a, const HandleLoop& b) { return a.crossings < b.crossings; });
   // independent periods by Gram-Schmidt
   std::vector<Eigen::VectorXd> basis;
-  std::vector<const Loop*> chosen;
-  for (const Loop& loop : loops) {
+  std::vector<HandleLoop> chosen;
+  for (const HandleLoop& loop : loops) {
     if (chosen.size() == m) break;
     Eigen::VectorXd r = loop.period;
     for (const Eigen::VectorXd& b : basis) r -= r.dot(b) * b;
     if (r.norm() < 1e-6) continue;
     basis.push_back(r / r.norm());
-    chosen.push_back(&loop);
+    chosen.push_back(loop);
   }
+  return chosen;
+}
+
+/// The field's jump across the side that closes `loop` (radians; its remainder to
+/// a whole quarter turn is the loop's holonomy).
+double handle_jump(const TriangleSoup& soup, const LocalFrames& frames, const Eigen::VectorXd& u,
+                   const CrossField& field, const HandleLoop& loop) {
+  const ExtraTurn none = [](std::size_t, const EdgeCorner&) { return 0.0; };
+  return field.angle[static_cast<std::size_t>(loop.g.face)] -
+         transported(soup, frames, u, loop.f, loop.k, loop.g, field.angle[loop.f], none);
+}
+
+std::vector<double> handle_coefficients(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                        const LocalFrames& frames, const Eigen::VectorXd& u, const FieldTree& tree,
+                                        const std::vector<SideForm>& forms, const CrossField& field) {
+  const std::size_t m = forms.size();
+  const std::vector<HandleLoop> chosen = independent_handle_loops(soup, adjacency, tree, forms, field);
   std::vector<double> c(m, 0.0);
   if (chosen.empty()) return c;
   Eigen::MatrixXd A(static_cast<Eigen::Index>(chosen.size()), static_cast<Eigen::Index>(m));
   Eigen::VectorXd b(static_cast<Eigen::Index>(chosen.size()));
   for (std::size_t r = 0; r < chosen.size(); ++r) {
-    A.row(static_cast<Eigen::Index>(r)) = chosen[r]->period.transpose();
-    b[static_cast<Eigen::Index>(r)] = chosen[r]->remainder;
+    A.row(static_cast<Eigen::Index>(r)) = chosen[r].period.transpose();
+    b[static_cast<Eigen::Index>(r)] = quarter_turn_remainder(handle_jump(soup, frames, u, field, chosen[r]));
   }
   const Eigen::VectorXd solution = A.completeOrthogonalDecomposition().solve(b);
   for (std::size_t k = 0; k < m; ++k) c[k] = solution[static_cast<Eigen::Index>(k)];
@@ -259,7 +280,8 @@ double LoopTurns::turn(int loop, const Eigen::VectorXd& rhs) const {
                                 gradient[static_cast<std::size_t>(loop)].dot(rhs));
 }
 
-LoopTurns loop_turns(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const ConeMetricSolver& solver) {
+LoopTurns loop_turns(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const ConeMetricSolver& solver,
+                     bool with_handles) {
   const LocalFrames frames = local_frames(soup);
   const auto [seed, seed_side] = seed_triangle(soup, adjacency);
   QM_ASSERT(seed_side >= 0);
@@ -292,6 +314,44 @@ LoopTurns loop_turns(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
       f = p;
     }
     turns.gradient[l] = solver.apply_inverse(along);
+  }
+  if (!with_handles || 2 - euler_characteristic(adjacency) - static_cast<int>(adjacency.boundary_loops.size()) <= 0)
+    return turns;
+  // the handles: around each independent loop the field jumps by J(0) + c . u,
+  // c the sum of the tree's w_ab (e_b - e_a) from the seed to g, less that to f,
+  // less the closing side's; a row turn = remainder(offset - gradient . rhs) with
+  // offset J(0) and gradient -L^-1 c
+  const std::vector<SideForm> forms = handle_forms(soup, adjacency);
+  if (forms.empty()) return turns;
+  const FieldTree tree = propagate(soup, adjacency, frames, zero, seed,
+                                   side_angle(frames.corners[static_cast<std::size_t>(seed)], seed_side), none, field);
+  classify_sides(soup, adjacency, frames, zero, none, field);
+  const auto side_weight = [&](std::size_t f, int k, const EdgeCorner& g) {
+    return 0.5 * (frames.cot[f][static_cast<std::size_t>((k + 2) % 3)] +
+                  frames.cot[static_cast<std::size_t>(g.face)][static_cast<std::size_t>(3 - g.i - g.j)]);
+  };
+  // adds sign times the tree's coefficients from the seed to f
+  const auto add_path = [&](int f, double sign, Eigen::VectorXd& c) {
+    while (tree.parent[static_cast<std::size_t>(f)].first >= 0) {
+      const auto [p, k] = tree.parent[static_cast<std::size_t>(f)];
+      const Triangle& t = soup.triangles[static_cast<std::size_t>(p)];
+      const EdgeCorner g = adjacency.find(t[(k + 1) % 3], t[k]);
+      const double w = side_weight(static_cast<std::size_t>(p), k, g);
+      c[t[(k + 1) % 3]] += sign * w;
+      c[t[k]] -= sign * w;
+      f = p;
+    }
+  };
+  for (const HandleLoop& loop : independent_handle_loops(soup, adjacency, tree, forms, field)) {
+    Eigen::VectorXd c = Eigen::VectorXd::Zero(zero.size());
+    add_path(loop.g.face, 1.0, c);
+    add_path(static_cast<int>(loop.f), -1.0, c);
+    const Triangle& t = soup.triangles[loop.f];
+    const double w = side_weight(loop.f, loop.k, loop.g);
+    c[t[(loop.k + 1) % 3]] -= w;
+    c[t[loop.k]] += w;
+    turns.offset.push_back(handle_jump(soup, frames, zero, field, loop));
+    turns.gradient.push_back(-solver.apply_inverse(c));
   }
   return turns;
 }

@@ -63,16 +63,27 @@ class ConeMetricSolver;
 /// Moving a cone of curvature kappa from v to w changes the inner product by
 /// kappa (gradient_B[w] - gradient_B[v]): cone placement tries thousands of moves
 /// at the price of one solve per loop.
+/// After the boundary loops' rows come, on a surface with handles, one row per
+/// independent loop round a handle (the tree's loops that handle_alignment.h's
+/// forms close, fewest crossings first), in the same form: the remainder of the
+/// field's jump across the loop, which the handles' trivial connection turns back
+/// and the seamless map can only take as shear (fertility: handles turned by up
+/// to 69 degrees). Its offset is the jump with u = 0, its gradient -L^-1 c, c the
+/// coefficients of u in the turns along the loop.
 struct LoopTurns {
   int reference = -1;
-  std::vector<double> offset;                 ///< per loop (0 for the reference)
-  std::vector<Eigen::VectorXd> gradient;      ///< per loop, per vertex (empty for the reference)
+  std::vector<double> offset;                 ///< per row (0 for the reference)
+  std::vector<Eigen::VectorXd> gradient;      ///< per row, per vertex (empty for the reference)
   /// turn_B for the metric's right side `rhs` = K_target - K (per vertex).
   double turn(int loop, const Eigen::VectorXd& rhs) const;
+  std::size_t rows() const { return offset.size(); }
+  /// whether a row other than the reference's is there to steer
+  bool steers() const { return rows() > (reference >= 0 ? 1u : 0u); }
 };
 
 /// Precondition: `solver` factored on this soup; the soup is connected.
-LoopTurns loop_turns(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const ConeMetricSolver& solver);
+LoopTurns loop_turns(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const ConeMetricSolver& solver,
+                     bool with_handles = true);
 
 /// Precondition: `u` from cone_metric on this soup; the soup is connected.
 CrossField cone_cross_field(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u);

@@ -229,23 +229,51 @@ constexpr double finer_lattices[] = {0.95, 0.9};
 constexpr int max_finer_attempts = 6;
 constexpr double finer_lattice_below = 1.1;
 
+/// The cone candidate judged as its quads would be written: a sound one gets the
+/// deviation tolerance the Abel route refines to (the written quads' fitting uses
+/// it), and when its quads are farther from S than the acceptance allows, the
+/// improvement the written quads get (quad_improvement.h: the worst quads smoothed,
+/// corners moved onto S where the quads cut across it, corners towards right
+/// angles) before its quality, size band and distance are measured again. The
+/// cones' quads are not refined, so their distance is judged after the fitting.
+void judge_as_written(ConeCandidate& cones, const QuadMeshOptions& options, double diagonal, SurfaceTopology input,
+                      Stages& stages) {
+  Candidate& c = cones.candidate;
+  if (!std::isnan(cones.distance) || !sound(c.quality, input, options.acceptance)) return;
+  cones.distance = relative_hausdorff(c.result);
+  c.result.judged_deviation = cones.distance * diagonal;
+  if (options.max_deviation >= 0) c.result.max_deviation = deviation_tolerance(options, diagonal, c.result);
+  if (cones.distance <= options.acceptance.max_hausdorff_relative) return;
+  c.result.judged_deviation = -1;  // the fitting measures it again
+  improve_quads(c.result, options, stages);
+  c.quality = assess_candidate(c.result);
+  cones.band = size_band(c.result);
+  cones.distance = relative_hausdorff(c.result);
+  c.result.judged_deviation = cones.distance * diagonal;
+}
+
 /// The first placement of cone_placements() whose quads at `lattice_factor` are
-/// sound, each placement one of `attempts_left` (counted down, a thrown one too).
-/// When none is sound: the last that gave quads, measured; nothing when every one
-/// threw (`failure` then says why the first did).
-std::optional<ConeCandidate> first_sound_placement(const FormSetup& setup, const QuadMeshOptions& options,
+/// acceptable: sound, size_band_goal of them in the size band, every corner in its
+/// quad count, and within the acceptance's distance of S as judged
+/// (judge_as_written); each placement one of `attempts_left` (counted down, a
+/// thrown one too). The first sound one may miss the band or a corner where a later
+/// one does not (fertility: its handles steered, the first sound placement has 85%
+/// in the band, the third 93%). When none is acceptable: the first sound one
+/// (judged, if it was); when none is sound, the last that gave quads, measured;
+/// nothing when every one threw (`failure` then says why the first did).
+std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, const QuadMeshOptions& options,
                                                    SurfaceTopology input, Stages& stages, double lattice_factor,
                                                    int& attempts_left, std::string& failure,
                                                    RoundingOrder rounding = RoundingOrder::cones_first) {
-  std::optional<Candidate> last;
+  std::optional<ConeCandidate> last, first_sound;
   std::vector<std::vector<Cone>> placed;
   const InteriorCones interior = options.cone_placement == ConePlacement::cross_field ? InteriorCones::cross_field
                                                                                      : InteriorCones::greedy;
   std::vector<ConePlacementOptions> placements = cone_placements(interior);
   for (ConePlacementOptions& p : placements) p.rounding = rounding;
   // with two threads, two placements at a time (each a seamless map of up to
-  // several seconds, on one core); the first sound one in order is kept, as one
-  // at a time would, and what a placement after it found is dropped
+  // several seconds, on one core); the first acceptable one in order is kept, as
+  // one at a time would, and what a placement after it found is dropped
   const std::size_t width = std::max<std::size_t>(1, std::min<std::size_t>(placements_side_by_side, worker_threads()));
   bool found = false;
   for (std::size_t start = 0; start < placements.size() && attempts_left > 0 && !found; start += width) {
@@ -273,15 +301,23 @@ std::optional<ConeCandidate> first_sound_placement(const FormSetup& setup, const
         if (failure.empty()) failure = error;
         continue;
       }
-      last = std::move(attempt.candidate);
-      if ((found = sound(last->quality, input, options.acceptance))) break;
+      last.emplace();
+      last->candidate = std::move(*attempt.candidate);
+      last->band = size_band(last->candidate.result);
+      if (!sound(last->candidate.quality, input, options.acceptance)) continue;
+      if (last->band.share_in_band >= size_band_goal && corner_mismatches(last->candidate.result) == 0) {
+        judge_as_written(*last, options, setup.diagonal, input, stages);
+        found = sound(last->candidate.quality, input, options.acceptance) &&
+                last->band.share_in_band >= size_band_goal &&
+                last->distance <= options.acceptance.max_hausdorff_relative;
+        if (found) break;
+      }
+      if (!first_sound) first_sound = std::move(last);
     }
   }
-  if (!last || !last->quality.has_quads) return std::nullopt;
-  ConeCandidate out;
-  out.band = size_band(last->result);
-  out.candidate = std::move(*last);
-  return out;
+  if (!found && first_sound) last = std::move(first_sound);
+  if (!last || !last->candidate.quality.has_quads) return std::nullopt;
+  return last;
 }
 
 /// The cone route's candidate: the placements in turn, until one gives sound quads
@@ -292,7 +328,7 @@ ConeCandidate cone_candidate(const FormSetup& setup, const QuadMeshOptions& opti
   std::string failure;
   int every_placement = static_cast<int>(cone_placements().size());
   std::optional<ConeCandidate> cones =
-      first_sound_placement(setup, options, input, stages, 1.0, every_placement, failure);
+      first_acceptable_placement(setup, options, input, stages, 1.0, every_placement, failure);
   if (!cones || !sound(cones->candidate.quality, input, options.acceptance)) {
     // the cones and lines rounded first can leave the cut translations, and the
     // boundary segments a cut ends in, far from their fit (seamless_map.h): every
@@ -302,7 +338,7 @@ ConeCandidate cone_candidate(const FormSetup& setup, const QuadMeshOptions& opti
                     "translations first");
     int second_pass = static_cast<int>(cone_placements().size());
     std::string ignored;
-    std::optional<ConeCandidate> again = first_sound_placement(setup, options, input, stages, 1.0, second_pass,
+    std::optional<ConeCandidate> again = first_acceptable_placement(setup, options, input, stages, 1.0, second_pass,
                                                                ignored, RoundingOrder::translations_first);
     if (again && (!cones || sound(again->candidate.quality, input, options.acceptance))) cones = std::move(again);
   }
@@ -320,36 +356,13 @@ ConeCandidate cone_candidate(const FormSetup& setup, const QuadMeshOptions& opti
   for (double scale : finer_lattices) {
     std::string ignored;
     std::optional<ConeCandidate> finer =
-        first_sound_placement(setup, options, input, stages, scale, attempts_left, ignored);
+        first_acceptable_placement(setup, options, input, stages, scale, attempts_left, ignored);
     if (!finer || !sound(finer->candidate.quality, input, options.acceptance)) continue;
     if (finer->band.max_ratio <= max_size_ratio &&
         finer->band.share_in_band >= std::min(band.share_in_band, size_band_goal))
       return std::move(*finer);
   }
   return std::move(*cones);
-}
-
-/// The cone candidate judged as its quads would be written: a sound one gets the
-/// deviation tolerance the Abel route refines to (the written quads' fitting uses
-/// it), and when its quads are farther from S than the acceptance allows, the
-/// improvement the written quads get (quad_improvement.h: the worst quads smoothed,
-/// corners moved onto S where the quads cut across it, corners towards right
-/// angles) before its quality, size band and distance are measured again. The
-/// cones' quads are not refined, so their distance is judged after the fitting.
-void judge_as_written(ConeCandidate& cones, const QuadMeshOptions& options, double diagonal, SurfaceTopology input,
-                      Stages& stages) {
-  Candidate& c = cones.candidate;
-  if (!std::isnan(cones.distance) || !sound(c.quality, input, options.acceptance)) return;
-  cones.distance = relative_hausdorff(c.result);
-  c.result.judged_deviation = cones.distance * diagonal;
-  if (options.max_deviation >= 0) c.result.max_deviation = deviation_tolerance(options, diagonal, c.result);
-  if (cones.distance <= options.acceptance.max_hausdorff_relative) return;
-  c.result.judged_deviation = -1;  // the fitting measures it again
-  improve_quads(c.result, options, stages);
-  c.quality = assess_candidate(c.result);
-  cones.band = size_band(c.result);
-  cones.distance = relative_hausdorff(c.result);
-  c.result.judged_deviation = cones.distance * diagonal;
 }
 
 }  // namespace
