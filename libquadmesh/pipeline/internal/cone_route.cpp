@@ -21,7 +21,7 @@
 
 namespace qm {
 
-std::vector<ConePlacementOptions> cone_placements(InteriorCones interior) {
+std::vector<ConePlacementOptions> cone_placements(InteriorCones interior, bool handles) {
   ConePlacementOptions first;
   first.interior = interior;
   ConePlacementOptions no_pairs = first;
@@ -32,8 +32,20 @@ std::vector<ConePlacementOptions> cone_placements(InteriorCones interior) {
   ConePlacementOptions widest = first;
   widest.boundary_distance = 3.0;
   widest.cone_spacing = 3.5;
-  return {first, no_pairs, wider, widest};
+  std::vector<ConePlacementOptions> out{first, no_pairs, wider, widest};
+  if (handles)
+    for (std::size_t i = 0, n = out.size(); i < n; ++i) {
+      ConePlacementOptions unsteered = out[i];
+      unsteered.steer_handles = false;
+      out.push_back(unsteered);
+    }
+  return out;
 }
+
+namespace {
+/// Whether a surface of this topology has handles (genus > 0).
+bool has_handles(SurfaceTopology t) { return 2 - t.euler_characteristic - t.boundary_loops > 0; }
+}  // namespace
 
 namespace {
 
@@ -253,7 +265,8 @@ void judge_as_written(ConeCandidate& cones, const QuadMeshOptions& options, doub
 }
 
 /// The first placement of cone_placements() whose quads at `lattice_factor` are
-/// acceptable: sound, size_band_goal of them in the size band, every corner in its
+/// acceptable: sound, size_band_goal of them in the size band and none above
+/// max_size_ratio x the size, every corner in its
 /// quad count, and within the acceptance's distance of S as judged
 /// (judge_as_written); each placement one of `attempts_left` (counted down, a
 /// thrown one too). The first sound one may miss the band or a corner where a later
@@ -269,7 +282,7 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
   std::vector<std::vector<Cone>> placed;
   const InteriorCones interior = options.cone_placement == ConePlacement::cross_field ? InteriorCones::cross_field
                                                                                      : InteriorCones::greedy;
-  std::vector<ConePlacementOptions> placements = cone_placements(interior);
+  std::vector<ConePlacementOptions> placements = cone_placements(interior, has_handles(input));
   for (ConePlacementOptions& p : placements) p.rounding = rounding;
   // with two threads, two placements at a time (each a seamless map of up to
   // several seconds, on one core); the first acceptable one in order is kept, as
@@ -305,10 +318,12 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
       last->candidate = std::move(*attempt.candidate);
       last->band = size_band(last->candidate.result);
       if (!sound(last->candidate.quality, input, options.acceptance)) continue;
-      if (last->band.share_in_band >= size_band_goal && corner_mismatches(last->candidate.result) == 0) {
+      const auto in_band = [&](const SizeBand& band) {
+        return band.share_in_band >= size_band_goal && band.max_ratio <= max_size_ratio;
+      };
+      if (in_band(last->band) && corner_mismatches(last->candidate.result) == 0) {
         judge_as_written(*last, options, setup.diagonal, input, stages);
-        found = sound(last->candidate.quality, input, options.acceptance) &&
-                last->band.share_in_band >= size_band_goal &&
+        found = sound(last->candidate.quality, input, options.acceptance) && in_band(last->band) &&
                 last->distance <= options.acceptance.max_hausdorff_relative;
         if (found) break;
       }
@@ -326,7 +341,7 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
 ConeCandidate cone_candidate(const FormSetup& setup, const QuadMeshOptions& options, SurfaceTopology input,
                              Stages& stages) {
   std::string failure;
-  int every_placement = static_cast<int>(cone_placements().size());
+  int every_placement = static_cast<int>(cone_placements(InteriorCones::greedy, has_handles(input)).size());
   std::optional<ConeCandidate> cones =
       first_acceptable_placement(setup, options, input, stages, 1.0, every_placement, failure);
   if (!cones || !sound(cones->candidate.quality, input, options.acceptance)) {
@@ -336,7 +351,7 @@ ConeCandidate cone_candidate(const FormSetup& setup, const QuadMeshOptions& opti
     // candidate stands when this one finds nothing sound either
     stages.announce("no placement gave sound quads: the placements again, the seamless maps rounding the cut "
                     "translations first");
-    int second_pass = static_cast<int>(cone_placements().size());
+    int second_pass = static_cast<int>(cone_placements(InteriorCones::greedy, has_handles(input)).size());
     std::string ignored;
     std::optional<ConeCandidate> again = first_acceptable_placement(setup, options, input, stages, 1.0, second_pass,
                                                                ignored, RoundingOrder::translations_first);

@@ -62,7 +62,11 @@ std::vector<ConeAttempt> cone_attempts_side_by_side(const FormSetup& setup,
 /// more places to fold), then interior cones farther from the boundary and from
 /// each other (cramped cones fold the map between them and the boundary); every
 /// one with its interior cones from `interior`.
-std::vector<ConePlacementOptions> cone_placements(InteriorCones interior = InteriorCones::greedy);
+/// On a surface with `handles`, the same again with steer_handles off, after them:
+/// steering the handles' turns moves the cones off where the sizes want them, and
+/// on a genus-1 scan with one hole every steered placement folds.
+std::vector<ConePlacementOptions> cone_placements(InteriorCones interior = InteriorCones::greedy,
+                                                  bool handles = false);
 
 /// Sound: quads with the input's topology, no inverted or flipped quad, no dropped
 /// cell, no stray boundary point.
