@@ -219,7 +219,8 @@ void relax_cones_for_size(const TriangleSoup& soup, const SurfaceAdjacency& adja
     // sizes relax far less (kitten's first placement: 18 interior cones against
     // 10), and the alignment after the relaxation steers the handles again
     double c = 0;
-    for (std::size_t l = 0; l < adjacency.boundary_loops.size(); ++l) c += std::abs(model.turn(static_cast<int>(l), rhs));
+    for (std::size_t l = 0; l < adjacency.boundary_loops.size(); ++l)
+      c += std::abs(model.turn(static_cast<int>(l), rhs));
     return c;
   };
   auto metric = [&](const std::vector<Cone>& trial) {
