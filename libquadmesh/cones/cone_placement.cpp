@@ -211,7 +211,7 @@ void relax_cones_for_size(const TriangleSoup& soup, const SurfaceAdjacency& adja
                           const std::vector<double>& area, const std::vector<char>& eligible, int separation,
                           int passes, double slack, std::vector<Cone>& cones) {
   auto alignment_cost = [&](const std::vector<Cone>& trial) {
-    if (!model.steers()) return 0.0;
+    if (adjacency.boundary_loops.size() < 2) return 0.0;
     const std::vector<double> kappa = target_curvature(adjacency, quads_per_vertex(adjacency, trial));
     Eigen::VectorXd rhs(static_cast<Eigen::Index>(kappa.size()));
     for (std::size_t v = 0; v < kappa.size(); ++v) rhs[static_cast<Eigen::Index>(v)] = kappa[v] - curvature[v];
@@ -429,8 +429,7 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
   const double spacing = options.cone_spacing * size;
   // the turns the cones steer: the boundary loops' and, on a surface with
   // handles, the handles' (cross_field.h LoopTurns)
-  const bool handles = 2 - euler_characteristic(adjacency) - static_cast<int>(adjacency.boundary_loops.size()) > 0;
-  const LoopTurns model = adjacency.boundary_loops.size() > 1 || (handles && options.steer_handles)
+  const LoopTurns model = adjacency.boundary_loops.size() > 1 || (has_handles(adjacency) && options.steer_handles)
                               ? loop_turns(soup, adjacency, solver, options.steer_handles)
                               : LoopTurns{};
   const bool steered = model.steers();

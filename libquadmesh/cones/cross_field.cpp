@@ -288,49 +288,16 @@ LoopTurns loop_turns(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(soup.points.size()));
   const ExtraTurn none = [](std::size_t, const EdgeCorner&) { return 0.0; };
   CrossField field;
-  const std::vector<std::pair<int, int>> parent =
-      propagate(soup, adjacency, frames, zero, seed,
-                side_angle(frames.corners[static_cast<std::size_t>(seed)], seed_side), none, field)
-          .parent;
-  std::vector<std::pair<int, double>> first_side(adjacency.boundary_loops.size(), {-1, 0.0});
-  classify_sides(soup, adjacency, frames, zero, none, field, &first_side);
-  LoopTurns turns;
-  turns.reference = adjacency.loop_of_vertex[static_cast<std::size_t>(soup.triangles[static_cast<std::size_t>(seed)][static_cast<std::size_t>(seed_side)])];
-  turns.offset.assign(adjacency.boundary_loops.size(), 0.0);
-  turns.gradient.resize(adjacency.boundary_loops.size());
-  for (std::size_t l = 0; l < adjacency.boundary_loops.size(); ++l) {
-    if (static_cast<int>(l) == turns.reference) continue;
-    turns.offset[l] = first_side[l].second;
-    // the offset falls by the turn w_ab (u_b - u_a) of every tree edge on the way
-    Eigen::VectorXd along = Eigen::VectorXd::Zero(zero.size());
-    for (int f = first_side[l].first; parent[static_cast<std::size_t>(f)].first >= 0;) {
-      const auto [p, k] = parent[static_cast<std::size_t>(f)];
-      const Triangle& t = soup.triangles[static_cast<std::size_t>(p)];
-      const EdgeCorner g = adjacency.find(t[(k + 1) % 3], t[k]);
-      const double w = 0.5 * (frames.cot[static_cast<std::size_t>(p)][static_cast<std::size_t>((k + 2) % 3)] +
-                              frames.cot[static_cast<std::size_t>(g.face)][static_cast<std::size_t>(3 - g.i - g.j)]);
-      along[t[(k + 1) % 3]] += w;
-      along[t[k]] -= w;
-      f = p;
-    }
-    turns.gradient[l] = solver.apply_inverse(along);
-  }
-  if (!with_handles || 2 - euler_characteristic(adjacency) - static_cast<int>(adjacency.boundary_loops.size()) <= 0)
-    return turns;
-  // the handles: around each independent loop the field jumps by J(0) + c . u,
-  // c the sum of the tree's w_ab (e_b - e_a) from the seed to g, less that to f,
-  // less the closing side's; a row turn = remainder(offset - gradient . rhs) with
-  // offset J(0) and gradient -L^-1 c
-  const std::vector<SideForm> forms = handle_forms(soup, adjacency);
-  if (forms.empty()) return turns;
   const FieldTree tree = propagate(soup, adjacency, frames, zero, seed,
                                    side_angle(frames.corners[static_cast<std::size_t>(seed)], seed_side), none, field);
-  classify_sides(soup, adjacency, frames, zero, none, field);
+  std::vector<std::pair<int, double>> first_side(adjacency.boundary_loops.size(), {-1, 0.0});
+  classify_sides(soup, adjacency, frames, zero, none, field, &first_side);
   const auto side_weight = [&](std::size_t f, int k, const EdgeCorner& g) {
     return 0.5 * (frames.cot[f][static_cast<std::size_t>((k + 2) % 3)] +
                   frames.cot[static_cast<std::size_t>(g.face)][static_cast<std::size_t>(3 - g.i - g.j)]);
   };
-  // adds sign times the tree's coefficients from the seed to f
+  // adds sign times the turns w_ab (u_b - u_a) of the tree's edges from the seed
+  // to f, as coefficients of u
   const auto add_path = [&](int f, double sign, Eigen::VectorXd& c) {
     while (tree.parent[static_cast<std::size_t>(f)].first >= 0) {
       const auto [p, k] = tree.parent[static_cast<std::size_t>(f)];
@@ -342,6 +309,25 @@ LoopTurns loop_turns(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
       f = p;
     }
   };
+  LoopTurns turns;
+  turns.reference = adjacency.loop_of_vertex[static_cast<std::size_t>(soup.triangles[static_cast<std::size_t>(seed)][static_cast<std::size_t>(seed_side)])];
+  turns.offset.assign(adjacency.boundary_loops.size(), 0.0);
+  turns.gradient.resize(adjacency.boundary_loops.size());
+  for (std::size_t l = 0; l < adjacency.boundary_loops.size(); ++l) {
+    if (static_cast<int>(l) == turns.reference) continue;
+    turns.offset[l] = first_side[l].second;
+    // the offset falls by the turn w_ab (u_b - u_a) of every tree edge on the way
+    Eigen::VectorXd along = Eigen::VectorXd::Zero(zero.size());
+    add_path(first_side[l].first, 1.0, along);
+    turns.gradient[l] = solver.apply_inverse(along);
+  }
+  if (!with_handles || !has_handles(adjacency)) return turns;
+  // the handles: around each independent loop the field jumps by J(0) + c . u,
+  // c the sum of the tree's w_ab (e_b - e_a) from the seed to g, less that to f,
+  // less the closing side's; a row turn = remainder(offset - gradient . rhs) with
+  // offset J(0) and gradient -L^-1 c (the field and its tree as above: u = 0)
+  const std::vector<SideForm> forms = handle_forms(soup, adjacency);
+  if (forms.empty()) return turns;
   for (const HandleLoop& loop : independent_handle_loops(soup, adjacency, tree, forms, field)) {
     Eigen::VectorXd c = Eigen::VectorXd::Zero(zero.size());
     add_path(loop.g.face, 1.0, c);
@@ -365,8 +351,7 @@ CrossField cone_cross_field(const TriangleSoup& soup, const SurfaceAdjacency& ad
   const FieldTree tree = propagate(soup, adjacency, frames, u, seed, seed_angle, none, field);
   // the handles first (their forms keep every boundary loop where it is)
   // (none on a genus-0 surface: chi = 2 - 2g - loops)
-  const bool has_handles = 2 - euler_characteristic(adjacency) - static_cast<int>(adjacency.boundary_loops.size()) > 0;
-  const std::vector<SideForm> handles = has_handles ? handle_forms(soup, adjacency) : std::vector<SideForm>{};
+  const std::vector<SideForm> handles = has_handles(adjacency) ? handle_forms(soup, adjacency) : std::vector<SideForm>{};
   SideForm handle_turn;
   ExtraTurn base = none;
   if (!handles.empty()) {

@@ -19,9 +19,14 @@ using namespace qm;
 
 namespace {
 
+/// The shared fertility-3holes, as mesh_quads takes it in.
+TriangleSoup fertility() {
+  return analyze_topology(io::read_surface(test::shared_mesh("fertility-3holes.obj")).soup).soup;
+}
+
 /// Fertility at 1.5% of the diagonal, its long edges split as mesh_quads splits them.
 FormSetup fertility_setup(Stages& stages) {
-  TriangleSoup soup = analyze_topology(io::read_surface(test::shared_mesh("fertility-3holes.obj")).soup).soup;
+  TriangleSoup soup = fertility();
   QuadMeshOptions options;
   options.size_relative = 0.015;
   const double size = requested_size(soup, options).edge;
@@ -137,7 +142,7 @@ TEST_CASE("fertility keeps its cones within the acceptance: its handles steered,
           doctest::test_suite("slow")) {
   // issue 18's acceptance on fertility at 1.5% of the diagonal: the first sound
   // placement misses the size band (85%); the route goes on to one that meets it
-  const TriangleSoup input = analyze_topology(io::read_surface(test::shared_mesh("fertility-3holes.obj")).soup).soup;
+  const TriangleSoup input = fertility();
   QuadMeshOptions options;
   options.size_relative = 0.015;
   const QuadMeshResult r = mesh_quads(input, options);

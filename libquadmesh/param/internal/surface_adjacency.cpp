@@ -18,6 +18,10 @@ int euler_characteristic(const SurfaceAdjacency& adjacency) {
   return static_cast<int>(vertices) - static_cast<int>(edges) + static_cast<int>(soup.triangles.size());
 }
 
+bool has_handles(const SurfaceAdjacency& adjacency) {
+  return 2 - euler_characteristic(adjacency) - static_cast<int>(adjacency.boundary_loops.size()) > 0;
+}
+
 SurfaceAdjacency surface_adjacency(const TriangleSoup& soup) {
   SurfaceAdjacency a;
   a.soup = &soup;

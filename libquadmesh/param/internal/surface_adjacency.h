@@ -46,6 +46,9 @@ SurfaceAdjacency surface_adjacency(const TriangleSoup& soup);
 /// left out).
 int euler_characteristic(const SurfaceAdjacency& adjacency);
 
+/// Whether the surface has handles: genus (2 - chi - boundary loops) / 2 > 0.
+bool has_handles(const SurfaceAdjacency& adjacency);
+
 /// The neighbours of v in counter-clockwise order (for a boundary vertex, from the
 /// boundary neighbour that follows v on its loop... to the one that precedes it),
 /// with the face between neighbour k and k + 1.

@@ -43,11 +43,9 @@ std::vector<ConePlacementOptions> cone_placements(InteriorCones interior, bool h
 }
 
 namespace {
+
 /// Whether a surface of this topology has handles (genus > 0).
 bool has_handles(SurfaceTopology t) { return 2 - t.euler_characteristic - t.boundary_loops > 0; }
-}  // namespace
-
-namespace {
 
 /// The cones `placement` puts on setup.soup at the requested size times `lattice_factor`.
 std::vector<Cone> placed_cones(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages,
