@@ -268,8 +268,8 @@ void judge_as_written(ConeCandidate& cones, const QuadMeshOptions& options, doub
 /// quad count, and within the acceptance's distance of S as judged
 /// (judge_as_written); each placement one of `attempts_left` (counted down, a
 /// thrown one too). The first sound one may miss the band or a corner where a later
-/// one does not (fertility: its handles steered, the first sound placement has 85%
-/// in the band, the third 93%). When none is acceptable: the first sound one
+/// one does not (fertility, its handles steered: the first sound placement has 85%
+/// of its quads in the band and two corners wrong). When none is acceptable: the first sound one
 /// (judged, if it was); when none is sound, the last that gave quads, measured;
 /// nothing when every one threw (`failure` then says why the first did).
 std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, const QuadMeshOptions& options,
