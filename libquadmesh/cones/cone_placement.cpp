@@ -359,6 +359,13 @@ void add_cone_pairs(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
   }
 }
 
+/// Per vertex, whether its distance is at least `least`.
+std::vector<char> farther_than(const std::vector<double>& distance, double least) {
+  std::vector<char> out(distance.size(), 0);
+  for (std::size_t v = 0; v < distance.size(); ++v) out[v] = distance[v] >= least;
+  return out;
+}
+
 /// The cones' curvature, and `deficit` quarter turns more spread over the
 /// interior by area.
 std::vector<double> spread_targets(const SurfaceAdjacency& adjacency, const std::vector<int>& quads,
@@ -416,8 +423,8 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
                             cones.size(), std::abs(deficit), allowed, options.max_interior_cones,
                             100 * options.max_interior_cone_share));
   const std::vector<double> distance = distance_to_boundary(soup, adjacency);
-  std::vector<char> eligible(distance.size(), 0);
-  for (std::size_t v = 0; v < distance.size(); ++v) eligible[v] = distance[v] >= options.boundary_distance * size;
+  double boundary_distance = options.boundary_distance;
+  std::vector<char> eligible = farther_than(distance, boundary_distance * size);
   const ConeMetricSolver solver(soup, adjacency);
   double interior_area = 0;
   for (std::size_t v = 0; v < area.size(); ++v)
@@ -426,7 +433,8 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
   std::vector<char> taken(soup.points.size(), 0);
   // vertices nearer than cone_spacing quads to a placed interior cone are taken
   // too: two cones closer than that compete for the same lattice cells
-  const double spacing = options.cone_spacing * size;
+  double cone_spacing = options.cone_spacing;
+  double spacing = cone_spacing * size;
   // the turns the cones steer: the boundary loops' and, on a surface with
   // handles, the handles' (cross_field.h LoopTurns)
   const LoopTurns model = adjacency.boundary_loops.size() > 1 || (has_handles(adjacency) && options.steer_handles)
@@ -460,11 +468,23 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
     for (std::size_t v = 0; v < soup.points.size(); ++v)
       if (eligible[v] && !taken[v] && (extreme < 0 || step * u[static_cast<Eigen::Index>(v)] < step * u[extreme]))
         extreme = static_cast<int>(v);
+    if (extreme < 0 && boundary_distance > options.narrow_boundary_distance) {
+      // a part too narrow for the cones this far from its boundary (a shaft, the
+      // ring round a bore): the rest of them, and any pairs, may come nearer
+      boundary_distance = options.narrow_boundary_distance;
+      cone_spacing = std::min(cone_spacing, options.narrow_cone_spacing);
+      spacing = cone_spacing * size;
+      eligible = farther_than(distance, boundary_distance * size);
+      std::fill(taken.begin(), taken.end(), 0);
+      for (std::size_t c = corner_count; c < cones.size(); ++c)
+        mark_within(soup.points, soup.points[static_cast<std::size_t>(cones[c].vertex)], spacing, 1, taken);
+      continue;
+    }
     if (extreme < 0)
       throw Error(ErrorCode::unsupported,
                   fmt::format("no inner vertex is {:g} quads from the boundary and {:g} from the other cones to take "
                               "a cone ({} of {} placed)",
-                              options.boundary_distance, options.cone_spacing, cones.size(), cones.size() + std::abs(deficit)));
+                              boundary_distance, cone_spacing, cones.size(), cones.size() + std::abs(deficit)));
     int best = extreme;
     if (steered) {
       // among the vertices nearly as extreme, the one after which the field meets

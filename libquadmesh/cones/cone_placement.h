@@ -52,6 +52,12 @@ struct ConePlacementOptions {
   /// Interior cones keep this far from each other (in quads of the target size,
   /// straight-line distance): two nearer cones fold the map between them.
   double cone_spacing = 2.5;
+  /// Where no vertex is that far from the boundary and the other cones (a part
+  /// narrower than twice boundary_distance: a shaft, the ring round a bore), the
+  /// rest of the interior cones may come this near the boundary and this near
+  /// each other (quads; never farther than the two above).
+  double narrow_boundary_distance = 1.5;
+  double narrow_cone_spacing = 2.0;
   /// With several boundary loops, each cone goes, among the vertices whose u is
   /// within this of the extreme, where the field meets the loops best.
   double extreme_tolerance = 0.15;

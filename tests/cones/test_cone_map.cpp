@@ -14,6 +14,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -387,6 +388,51 @@ TEST_CASE("a T-plate: cones placed farther from the boundary and apart map witho
   CHECK(m.report.inverted_triangles == 0);
   const LatticeQuads q = complete_quads(soup, adjacency, m.map);
   CHECK(euler_and_singular(q) == std::pair{-1, 8});
+  check_cone_quads(q, cones);
+}
+
+TEST_CASE("a rod end too narrow for cones 2 quads from the boundary: the rest come nearer, the map folds nowhere") {
+  // examples/rod-end.geo at 1.5% of the diagonal: the shaft and the eye's ring are
+  // about 3.5 quads wide and the block holds 2.4 quads between its pin hole and its
+  // edges. Eight corners (four right, four of 250-270 degrees), chi = -1: four
+  // valence-5 cones, which found no vertex 2 quads from the boundary and 2.5 from
+  // each other (the placement threw, and the part got no quads at all)
+  const double size = 2.871;
+  io::ReadOptions read;
+  read.quad_size = size;
+  const TriangleSoup soup = io::read_surface(test::example("rod-end.geo"), read).soup;
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  ConePlacementOptions roomy;
+  roomy.narrow_boundary_distance = roomy.boundary_distance;
+  roomy.narrow_cone_spacing = roomy.cone_spacing;
+  try {
+    place_cones(soup, adjacency, size, roomy);
+    FAIL("the rod end found room for its cones 2 quads from the boundary");
+  } catch (const Error& e) {
+    CHECK(std::string(e.what()).find("no inner vertex is 2 quads from the boundary") != std::string::npos);
+  }
+  const std::vector<Cone> cones = place_cones(soup, adjacency, size);
+  int convex = 0, concave = 0, fives = 0;
+  double nearest = std::numeric_limits<double>::infinity();  // an interior cone to a boundary vertex
+  for (const Cone& c : cones) {
+    const bool boundary = adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)];
+    convex += boundary && c.quads == 1;
+    concave += boundary && c.quads == 3;
+    fives += !boundary && c.quads == 5;
+    if (boundary) continue;
+    for (std::size_t v = 0; v < soup.points.size(); ++v)
+      if (adjacency.boundary_vertex[v])
+        nearest = std::min(nearest, (soup.points[v] - soup.points[static_cast<std::size_t>(c.vertex)]).norm());
+  }
+  CHECK(convex == 4);
+  CHECK(concave == 4);
+  CHECK(fives == 4);
+  CHECK(cones.size() == 12);
+  CHECK(nearest < 2 * size);  // nearer than the default allows
+  const ConeMap m = cone_map(soup, adjacency, cones, size);
+  CHECK(m.report.inverted_triangles == 0);
+  const LatticeQuads q = complete_quads(soup, adjacency, m.map);
+  CHECK(euler_and_singular(q) == std::pair{-1, 4});
   check_cone_quads(q, cones);
 }
 

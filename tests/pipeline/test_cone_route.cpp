@@ -177,6 +177,7 @@ TEST_CASE("cone placements tried side by side give what each gives alone, bit fo
   placements.resize(2);
   ConePlacementOptions impossible = placements[0];
   impossible.boundary_distance = 1000;  // no inner vertex that far from the boundary: place_cones throws
+  impossible.narrow_boundary_distance = 1000;  // (not even where the part is narrow)
   placements.push_back(impossible);
   const ThreadLimit limit(2);
   const std::vector<ConeAttempt> side_by_side = cone_attempts_side_by_side(setup, placements, 1.0, true);
