@@ -42,6 +42,15 @@ std::vector<ConePlacementOptions> cone_placements(InteriorCones interior, bool h
   return out;
 }
 
+ConePlacementOptions nearer_placement() {
+  ConePlacementOptions nearer;
+  nearer.boundary_distance = 1.2;
+  nearer.cone_spacing = 1.7;
+  nearer.narrow_boundary_distance = nearer.boundary_distance;
+  nearer.narrow_cone_spacing = nearer.cone_spacing;
+  return nearer;
+}
+
 namespace {
 
 /// Whether a surface of this topology has handles (genus > 0).
@@ -262,7 +271,9 @@ void judge_as_written(ConeCandidate& cones, const QuadMeshOptions& options, doub
   c.result.judged_deviation = cones.distance * diagonal;
 }
 
-/// The first placement of cone_placements() whose quads at `lattice_factor` are
+/// The first placement of cone_placements() (then nearer_placement(), when some
+/// gave sound quads but none of those had size_band_goal of them in the size
+/// band) whose quads at `lattice_factor` are
 /// acceptable: sound, size_band_goal of them in the size band and none above
 /// max_size_ratio x the size, every corner in its
 /// quad count, and within the acceptance's distance of S as judged
@@ -287,7 +298,20 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
   // one at a time would, and what a placement after it found is dropped
   const std::size_t width = std::max<std::size_t>(1, std::min<std::size_t>(placements_side_by_side, worker_threads()));
   bool found = false;
-  for (std::size_t start = 0; start < placements.size() && attempts_left > 0 && !found; start += width) {
+  // whether some placement's quads were sound, and whether one of those had
+  // size_band_goal of them in the size band
+  bool some_sound = false, sound_share_in_band = false;
+  bool nearer_added = false;
+  for (std::size_t start = 0; attempts_left > 0 && !found; start += width) {
+    if (start >= placements.size()) {
+      // sound quads, but too few of them in the band: the cones nearer the boundary
+      // (a hole little wider than a quad, its cones kept 2 quads off, grades the
+      // quads round it out of the band)
+      if (nearer_added || !some_sound || sound_share_in_band || interior != InteriorCones::greedy) break;
+      placements.push_back(nearer_placement());
+      placements.back().rounding = rounding;
+      nearer_added = true;
+    }
     const std::size_t count = std::min({width, placements.size() - start, static_cast<std::size_t>(attempts_left)});
     std::vector<ConeAttempt> attempts;
     if (count == 1) {  // on this thread, its progress as it goes
@@ -319,6 +343,8 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
       const auto in_band = [&](const SizeBand& band) {
         return band.share_in_band >= size_band_goal && band.max_ratio <= max_size_ratio;
       };
+      some_sound = true;
+      sound_share_in_band = sound_share_in_band || last->band.share_in_band >= size_band_goal;
       if (in_band(last->band) && corner_mismatches(last->candidate.result) == 0) {
         judge_as_written(*last, options, setup.diagonal, input, stages);
         found = sound(last->candidate.quality, input, options.acceptance) && in_band(last->band) &&
@@ -339,7 +365,7 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
 ConeCandidate cone_candidate(const FormSetup& setup, const QuadMeshOptions& options, SurfaceTopology input,
                              Stages& stages) {
   std::string failure;
-  int every_placement = static_cast<int>(cone_placements(InteriorCones::greedy, has_handles(input)).size());
+  int every_placement = static_cast<int>(cone_placements(InteriorCones::greedy, has_handles(input)).size()) + 1;
   std::optional<ConeCandidate> cones =
       first_acceptable_placement(setup, options, input, stages, 1.0, every_placement, failure);
   if (!cones || !sound(cones->candidate.quality, input, options.acceptance)) {
@@ -349,7 +375,7 @@ ConeCandidate cone_candidate(const FormSetup& setup, const QuadMeshOptions& opti
     // candidate stands when this one finds nothing sound either
     stages.announce("no placement gave sound quads: the placements again, the seamless maps rounding the cut "
                     "translations first");
-    int second_pass = static_cast<int>(cone_placements(InteriorCones::greedy, has_handles(input)).size());
+    int second_pass = static_cast<int>(cone_placements(InteriorCones::greedy, has_handles(input)).size()) + 1;
     std::string ignored;
     std::optional<ConeCandidate> again = first_acceptable_placement(setup, options, input, stages, 1.0, second_pass,
                                                                ignored, RoundingOrder::translations_first);

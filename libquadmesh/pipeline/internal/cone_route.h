@@ -68,6 +68,14 @@ std::vector<ConeAttempt> cone_attempts_side_by_side(const FormSetup& setup,
 std::vector<ConePlacementOptions> cone_placements(InteriorCones interior = InteriorCones::greedy,
                                                   bool handles = false);
 
+/// The placement tried after cone_placements() (greedy) when some gave sound quads
+/// but none of those had size_band_goal of them in the size band: interior cones
+/// 1.2 quads from the boundary and 1.7 apart. Round a hole little wider than a
+/// quad, cones kept 2 quads off grade the quads down to a fraction of the size (a
+/// strip 6.6 quads wide with a hole 2.8 across: 33% of the quads in the band, 100%
+/// with these).
+ConePlacementOptions nearer_placement();
+
 /// Sound: quads with the input's topology, no inverted or flipped quad, no dropped
 /// cell, no stray boundary point.
 bool sound(const CandidateQuality& c, SurfaceTopology input, const AcceptanceCriteria& criteria);
