@@ -11,6 +11,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -41,13 +42,15 @@ std::vector<double> vertex_areas(const TriangleSoup& soup) {
   return area;
 }
 
-/// Per vertex, the length of the shortest edge path to the boundary (Dijkstra).
-std::vector<double> distance_to_boundary(const TriangleSoup& soup, const SurfaceAdjacency& adjacency) {
+/// Per vertex, the length of the shortest edge path to a vertex marked in
+/// `sources` (Dijkstra; infinity when none is reachable).
+std::vector<double> distance_from(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                  const std::vector<char>& sources) {
   std::vector<double> distance(soup.points.size(), std::numeric_limits<double>::infinity());
   using Item = std::pair<double, int>;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
   for (std::size_t v = 0; v < soup.points.size(); ++v)
-    if (adjacency.boundary_vertex[v]) {
+    if (sources[v]) {
       distance[v] = 0;
       queue.push({0.0, static_cast<int>(v)});
     }
@@ -65,6 +68,12 @@ std::vector<double> distance_to_boundary(const TriangleSoup& soup, const Surface
       }
   }
   return distance;
+}
+
+/// Per vertex, the length of the shortest edge path to the boundary.
+std::vector<double> distance_to_boundary(const TriangleSoup& soup, const SurfaceAdjacency& adjacency) {
+  std::vector<char> boundary(adjacency.boundary_vertex.begin(), adjacency.boundary_vertex.end());
+  return distance_from(soup, adjacency, boundary);
 }
 
 /// Vertices within `rings` edges of v (v included).
@@ -305,6 +314,68 @@ void mark_within(const std::vector<Vec3>& points, const Vec3& at, double radius,
     if ((points[v] - at).squaredNorm() < radius * radius) marks[v] = value;
 }
 
+/// The boundary vertex with the highest u that may take a boundary cone (a
+/// straight boundary point in three quads): no vertex of `eligible` within
+/// `room` of it along the edges (an interior cone there has no place to go),
+/// and `spacing` (straight-line) from every cone. -1 when there is none.
+int cramped_boundary_extreme(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u,
+                             const std::vector<char>& eligible, double room, double spacing,
+                             const std::vector<Cone>& cones) {
+  const std::vector<double> to_eligible = distance_from(soup, adjacency, eligible);
+  int best = -1;
+  for (std::size_t v = 0; v < soup.points.size(); ++v) {
+    if (!adjacency.boundary_vertex[v] || to_eligible[v] <= room) continue;
+    if (best >= 0 && u[static_cast<Eigen::Index>(v)] <= u[best]) continue;
+    const bool apart = std::none_of(cones.begin(), cones.end(), [&](const Cone& c) {
+      return (soup.points[v] - soup.points[static_cast<std::size_t>(c.vertex)]).squaredNorm() < spacing * spacing;
+    });
+    if (apart) best = static_cast<int>(v);
+  }
+  return best;
+}
+
+/// The boundary loop of `adjacency` that holds vertex v (-1: none).
+int loop_of(const SurfaceAdjacency& adjacency, int v) {
+  for (std::size_t l = 0; l < adjacency.boundary_loops.size(); ++l)
+    if (std::find(adjacency.boundary_loops[l].begin(), adjacency.boundary_loops[l].end(), v) !=
+        adjacency.boundary_loops[l].end())
+      return static_cast<int>(l);
+  return -1;
+}
+
+/// The length of a closed loop of vertices.
+double loop_length(const TriangleSoup& soup, const std::vector<int>& loop) {
+  double length = 0;
+  for (std::size_t i = 0; i < loop.size(); ++i)
+    length += (soup.points[static_cast<std::size_t>(loop[(i + 1) % loop.size()])] -
+               soup.points[static_cast<std::size_t>(loop[i])])
+                  .norm();
+  return length;
+}
+
+/// Four vertices of the closed `loop` a quarter of its length apart along it, the
+/// first `start` (each the vertex nearest its quarter).
+std::array<int, 4> quarter_points(const TriangleSoup& soup, const std::vector<int>& loop, int start) {
+  const std::size_t n = loop.size();
+  const std::size_t first =
+      static_cast<std::size_t>(std::find(loop.begin(), loop.end(), start) - loop.begin());
+  const double length = loop_length(soup, loop);
+  std::array<int, 4> out{start, start, start, start};
+  std::array<double, 4> off{0, length, length, length};  // how far each pick is from its quarter
+  double along = 0;
+  for (std::size_t i = 0; i <= n; ++i) {
+    const int v = loop[(first + i) % n];
+    for (std::size_t k = 1; k < 4; ++k)
+      if (const double d = std::abs(along - 0.25 * static_cast<double>(k) * length); d < off[k]) {
+        off[k] = d;
+        out[k] = v;
+      }
+    along += (soup.points[static_cast<std::size_t>(loop[(first + i + 1) % n])] - soup.points[static_cast<std::size_t>(v)])
+                 .norm();
+  }
+  return out;
+}
+
 /// Valence-5 and valence-3 cones in pairs (Gauss-Bonnet kept), at the highest and
 /// the lowest u among the vertices that may take a cone, while the metric's quad
 /// size leaves the band: less than options.pair_band_goal of the area within
@@ -315,8 +386,8 @@ void mark_within(const std::vector<Vec3>& points, const Vec3& at, double radius,
 template <class Settle>
 void add_cone_pairs(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const ConeMetricSolver& solver,
                     const std::vector<double>& curvature, const std::vector<double>& area,
-                    const std::vector<char>& eligible, double spacing, const Settle& settle,
-                    const ConePlacementOptions& options, int room, std::vector<Cone>& cones) {
+                    const std::vector<char>& eligible, double spacing, double boundary_room, double size,
+                    const Settle& settle, const ConePlacementOptions& options, int room, std::vector<Cone>& cones) {
   auto measure = [&](const std::vector<Cone>& set, Eigen::VectorXd& u) {
     u = solver.solve(target_curvature(adjacency, quads_per_vertex(adjacency, set)), curvature);
     std::vector<char> mark(area.size(), 0);
@@ -343,11 +414,20 @@ void add_cone_pairs(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
       if (high < 0 || u[vi] > u[high]) high = static_cast<int>(v);
       if (low < 0 || u[vi] < u[low]) low = static_cast<int>(v);
     }
-    if (high < 0 || low < 0) return;
-    const Vec3 between = soup.points[static_cast<std::size_t>(high)] - soup.points[static_cast<std::size_t>(low)];
+    // the valence-5 one on the boundary where the interior has no room for it
+    // and the quads are smaller there (boundary_cones)
+    int edge = -1;
+    if (options.boundary_cones) {
+      edge = cramped_boundary_extreme(soup, adjacency, u, eligible, boundary_room, options.boundary_cone_spacing * size,
+                                      cones);
+      if (edge >= 0 && high >= 0 && u[edge] <= u[high]) edge = -1;
+    }
+    if ((high < 0 && edge < 0) || low < 0) return;
+    const int five = edge >= 0 ? edge : high;
+    const Vec3 between = soup.points[static_cast<std::size_t>(five)] - soup.points[static_cast<std::size_t>(low)];
     if (between.squaredNorm() < spacing * spacing) return;
     std::vector<Cone> trial = cones;
-    trial.push_back({high, 5});
+    trial.push_back(edge >= 0 ? Cone{edge, 3} : Cone{high, 5});
     trial.push_back({low, 3});
     settle(trial);
     Eigen::VectorXd trial_u;
@@ -396,7 +476,10 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
                               const ConePlacementOptions& options) {
   QM_ASSERT(size > 0);
   std::vector<Cone> cones = corner_cones(soup, adjacency, options);
-  const std::size_t corner_count = cones.size();
+  // the cones on the boundary (the corners, then any boundary cones) come first;
+  // the interior ones, which the settling moves, after them
+  const std::size_t corners_only = cones.size();
+  std::size_t corner_count = corners_only;
   int deficit = 4 * euler_characteristic(adjacency);
   for (const Cone& c : cones) deficit -= 2 - c.quads;
   const std::vector<double> area = vertex_areas(soup);
@@ -468,6 +551,36 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
     for (std::size_t v = 0; v < soup.points.size(); ++v)
       if (eligible[v] && !taken[v] && (extreme < 0 || step * u[static_cast<Eigen::Index>(v)] < step * u[extreme]))
         extreme = static_cast<int>(v);
+    if (step < 0 && options.boundary_cones) {
+      // where no interior vertex near the boundary may take the cone (a hole in a
+      // shaft a few quads wide), on the boundary when the quads are smaller there
+      const int edge = cramped_boundary_extreme(soup, adjacency, u, eligible, (boundary_distance + 1) * size,
+                                                options.boundary_cone_spacing * size, cones);
+      if (edge >= 0 && (extreme < 0 || u[edge] > u[extreme])) {
+        // on a hole a few quads round with no cone yet, four a quarter of its
+        // length apart: the hole a square on the lattice, its quarter turns taken
+        // where they are
+        std::vector<int> on_boundary{edge};
+        const int loop = loop_of(adjacency, edge);
+        const std::vector<int>& vertices = adjacency.boundary_loops[static_cast<std::size_t>(loop)];
+        const double length = loop_length(soup, vertices);
+        const bool bare = std::none_of(cones.begin(), cones.end(), [&](const Cone& c) {
+          return std::find(vertices.begin(), vertices.end(), c.vertex) != vertices.end();
+        });
+        if (deficit <= -4 && bare && length <= options.square_hole_length * size &&
+            length >= 4 * options.boundary_cone_spacing * size) {
+          const std::array<int, 4> quarters = quarter_points(soup, vertices, edge);
+          on_boundary.assign(quarters.begin(), quarters.end());
+        }
+        for (int b : on_boundary) {
+          cones.insert(cones.begin() + static_cast<std::ptrdiff_t>(corner_count), Cone{b, 3});
+          ++corner_count;
+          mark_within(soup.points, soup.points[static_cast<std::size_t>(b)], spacing, 1, taken);
+          deficit -= step;
+        }
+        continue;
+      }
+    }
     if (extreme < 0 && boundary_distance > options.narrow_boundary_distance) {
       // a part too narrow for the cones this far from its boundary (a shaft, the
       // ring round a bore): the rest of them, and any pairs, may come nearer
@@ -476,7 +589,7 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
       spacing = cone_spacing * size;
       eligible = farther_than(distance, boundary_distance * size);
       std::fill(taken.begin(), taken.end(), 0);
-      for (std::size_t c = corner_count; c < cones.size(); ++c)
+      for (std::size_t c = corners_only; c < cones.size(); ++c)
         mark_within(soup.points, soup.points[static_cast<std::size_t>(cones[c].vertex)], spacing, 1, taken);
       continue;
     }
@@ -529,7 +642,8 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
   settle(cones);
   if (greedy && options.pair_band_goal > 0) {
     const int interior = static_cast<int>(cones.size() - corner_count);
-    add_cone_pairs(soup, adjacency, solver, curvature, area, eligible, spacing, settle, options,
+    add_cone_pairs(soup, adjacency, solver, curvature, area, eligible, spacing, (boundary_distance + 1) * size, size,
+                   settle, options,
                    static_cast<int>(allowed) - interior, cones);
   }
   return cones;

@@ -58,6 +58,18 @@ struct ConePlacementOptions {
   /// each other (quads; never farther than the two above).
   double narrow_boundary_distance = 1.5;
   double narrow_cone_spacing = 2.0;
+  /// A valence-5 cone the corners leave may go on the boundary, as a straight
+  /// boundary point in three quads, where no vertex that may take an interior cone
+  /// is within boundary_distance + 1 quads along the edges and the quads are
+  /// smaller there than at any such vertex: a hole in a shaft a few quads wide
+  /// (the singular points of a hand-made O-grid round it sit on the shaft's edges).
+  bool boundary_cones = false;
+  /// Such a cone keeps this far from every other cone (quads, straight line).
+  double boundary_cone_spacing = 0.9;
+  /// When it falls on a hole at most this long (quads) with no cone on it yet, and
+  /// four valence-5 cones are still to place, they go on the hole a quarter of its
+  /// length apart: the hole a square on the lattice.
+  double square_hole_length = 8.0;
   /// With several boundary loops, each cone goes, among the vertices whose u is
   /// within this of the extreme, where the field meets the loops best.
   double extreme_tolerance = 0.15;

@@ -13,6 +13,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -138,6 +139,25 @@ void check_cone_quads(const LatticeQuads& q, const std::vector<Cone>& cones) {
     REQUIRE(p >= 0);
     CHECK(at[static_cast<std::size_t>(p)] == c.quads);
   }
+}
+
+/// The bundled example `name` as read for quads of edge `size` (its CAD
+/// triangulation at 0.75 x that).
+TriangleSoup example_at(const std::string& name, double size) {
+  io::ReadOptions read;
+  read.quad_size = size;
+  return io::read_surface(test::example(name), read).soup;
+}
+
+/// The cones' map has no inverted triangle, and its complete quads have `euler`
+/// and `singular` (euler_and_singular) with every cone in as many quads as it asks.
+void check_unfolded_quads(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const std::vector<Cone>& cones,
+                          double size, std::pair<int, int> euler_singular) {
+  const ConeMap m = cone_map(soup, adjacency, cones, size);
+  CHECK(m.report.inverted_triangles == 0);
+  const LatticeQuads q = complete_quads(soup, adjacency, m.map);
+  CHECK(euler_and_singular(q) == euler_singular);
+  check_cone_quads(q, cones);
 }
 
 /// A 2 x 1 rectangle with a strip of height `step` on its left half: a 270-degree
@@ -297,9 +317,7 @@ TEST_CASE("placed cones on a plate with two holes: one quad per corner, eight va
           doctest::test_suite("slow")) {
   // examples/plate-two-holes.geo: 100 x 60, holes of radius 10; chi = -1 and four
   // right corners leave -8 quarter turns inside (method.md section 11)
-  io::ReadOptions read;
-  read.quad_size = 1.75;
-  const TriangleSoup soup = io::read_surface(test::example("plate-two-holes.geo"), read).soup;
+  const TriangleSoup soup = example_at("plate-two-holes.geo", 1.75);
   const SurfaceAdjacency adjacency = surface_adjacency(soup);
   const std::vector<Cone> cones = place_cones(soup, adjacency, 1.75);
   REQUIRE(cones.size() == 12);
@@ -335,9 +353,7 @@ TEST_CASE("placed cones on a plate with two holes: one quad per corner, eight va
 
 TEST_CASE("the cross-field placement on a plate with two holes: the field's singularities carry the -8 quarter turns, "
           "complete quads" * doctest::test_suite("slow")) {
-  io::ReadOptions read;
-  read.quad_size = 1.75;
-  const TriangleSoup soup = io::read_surface(test::example("plate-two-holes.geo"), read).soup;
+  const TriangleSoup soup = example_at("plate-two-holes.geo", 1.75);
   const SurfaceAdjacency adjacency = surface_adjacency(soup);
   ConePlacementOptions options;
   options.interior = InteriorCones::cross_field;
@@ -353,11 +369,7 @@ TEST_CASE("the cross-field placement on a plate with two holes: the field's sing
   }
   CHECK(corners == 4);
   CHECK(interior_turns == -8);
-  const ConeMap m = cone_map(soup, adjacency, cones, 1.75);
-  CHECK(m.report.inverted_triangles == 0);
-  const LatticeQuads q = complete_quads(soup, adjacency, m.map);
-  CHECK(euler_and_singular(q) == std::pair{-1, interior});
-  check_cone_quads(q, cones);
+  check_unfolded_quads(soup, adjacency, cones, 1.75, {-1, interior});
 }
 
 TEST_CASE("a T-plate: cones placed farther from the boundary and apart map without folds, corners right" *
@@ -366,9 +378,7 @@ TEST_CASE("a T-plate: cones placed farther from the boundary and apart map witho
   // eight valence-5 cones. With the default placement two of them sit between the
   // left hole and the plate's edge and the map folds there; the route's second
   // placement (cone_route.h cone_placements) keeps them 2.5 quads from the boundary.
-  io::ReadOptions read;
-  read.quad_size = 2.343;
-  const TriangleSoup soup = io::read_surface(test::example("t-plate-two-holes.geo"), read).soup;
+  const TriangleSoup soup = example_at("t-plate-two-holes.geo", 2.343);
   const SurfaceAdjacency adjacency = surface_adjacency(soup);
   ConePlacementOptions wider;
   wider.boundary_distance = 2.5;
@@ -384,11 +394,7 @@ TEST_CASE("a T-plate: cones placed farther from the boundary and apart map witho
   CHECK(convex == 6);
   CHECK(concave == 2);
   CHECK(fives == 8);
-  const ConeMap m = cone_map(soup, adjacency, cones, 2.343);
-  CHECK(m.report.inverted_triangles == 0);
-  const LatticeQuads q = complete_quads(soup, adjacency, m.map);
-  CHECK(euler_and_singular(q) == std::pair{-1, 8});
-  check_cone_quads(q, cones);
+  check_unfolded_quads(soup, adjacency, cones, 2.343, {-1, 8});
 }
 
 TEST_CASE("a rod end too narrow for cones 2 quads from the boundary: the rest come nearer, the map folds nowhere") {
@@ -398,9 +404,7 @@ TEST_CASE("a rod end too narrow for cones 2 quads from the boundary: the rest co
   // valence-5 cones, which found no vertex 2 quads from the boundary and 2.5 from
   // each other (the placement threw, and the part got no quads at all)
   const double size = 2.871;
-  io::ReadOptions read;
-  read.quad_size = size;
-  const TriangleSoup soup = io::read_surface(test::example("rod-end.geo"), read).soup;
+  const TriangleSoup soup = example_at("rod-end.geo", size);
   const SurfaceAdjacency adjacency = surface_adjacency(soup);
   ConePlacementOptions roomy;
   roomy.narrow_boundary_distance = roomy.boundary_distance;
@@ -429,11 +433,42 @@ TEST_CASE("a rod end too narrow for cones 2 quads from the boundary: the rest co
   CHECK(fives == 4);
   CHECK(cones.size() == 12);
   CHECK(nearest < 2 * size);  // nearer than the default allows
-  const ConeMap m = cone_map(soup, adjacency, cones, size);
-  CHECK(m.report.inverted_triangles == 0);
-  const LatticeQuads q = complete_quads(soup, adjacency, m.map);
-  CHECK(euler_and_singular(q) == std::pair{-1, 4});
-  check_cone_quads(q, cones);
+  check_unfolded_quads(soup, adjacency, cones, size, {-1, 4});
+}
+
+TEST_CASE("a hole little wider than a quad in a shaft a few quads wide: valence-5 cones on its boundary") {
+  // examples/link-lightening-hole.geo: at 1.5% of the diagonal the shaft is 3.4
+  // quads wide and the hole 1.4 across. chi = -2 and four 255-degree corners: four
+  // valence-5 cones, and no vertex near the hole may take one inside (every
+  // interior placement folds). On the hole, a quarter of its length apart: a square
+  const double size = 3.554;
+  const TriangleSoup soup = example_at("link-lightening-hole.geo", size);
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  const auto on_hole = [&](const Cone& c) {
+    return adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)] &&
+           std::abs((soup.points[static_cast<std::size_t>(c.vertex)] - Vec3(96, 0, 0)).norm() - 2.5) < 1e-6;
+  };
+  const std::vector<Cone> inside = place_cones(soup, adjacency, size);
+  CHECK(std::count_if(inside.begin(), inside.end(), on_hole) == 0);
+  ConePlacementOptions options;
+  options.boundary_cones = true;
+  const std::vector<Cone> cones = place_cones(soup, adjacency, size, options);
+  int corners = 0, on_boundary = 0;
+  for (const Cone& c : cones) {
+    if (!adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)]) continue;
+    corners += c.quads == 3 && !on_hole(c) && std::abs(soup.points[static_cast<std::size_t>(c.vertex)].y()) > 5.9 &&
+               std::abs(soup.points[static_cast<std::size_t>(c.vertex)].y()) < 6.1 &&
+               (soup.points[static_cast<std::size_t>(c.vertex)].x() < 30 ||
+                soup.points[static_cast<std::size_t>(c.vertex)].x() > 170);
+    on_boundary += c.quads == 3 && on_hole(c);
+  }
+  CHECK(corners == 4);
+  CHECK(on_boundary == 4);
+  for (std::size_t a = 0; a < cones.size(); ++a)
+    for (std::size_t b = a + 1; b < cones.size(); ++b)
+      CHECK((soup.points[static_cast<std::size_t>(cones[a].vertex)] -
+             soup.points[static_cast<std::size_t>(cones[b].vertex)]).norm() >= 0.9 * size);
+  check_unfolded_quads(soup, adjacency, cones, size, {-2, 0});
 }
 
 TEST_CASE("a ragged boundary with more corners than cones are allowed is refused before any solve") {
@@ -490,13 +525,12 @@ TEST_CASE("a long L-arm on its automatic CAD triangulation: cones moved farther 
   // quads: the four valence-5 cones around the hole at the arm's end left the
   // field turned by 24 degrees at the hole when they could move 4 edges only, and
   // the map folded; moving up to three times as far aligns it
-  io::ReadOptions read;
-  read.quad_size = 1.8973665961010275;
-  const TriangleSoup soup = io::read_surface(test::example("l-plate-long-arm.geo"), read).soup;
+  const double size = 1.8973665961010275;
+  const TriangleSoup soup = example_at("l-plate-long-arm.geo", size);
   const SurfaceAdjacency adjacency = surface_adjacency(soup);
-  const std::vector<Cone> cones = place_cones(soup, adjacency, read.quad_size);
+  const std::vector<Cone> cones = place_cones(soup, adjacency, size);
   REQUIRE(cones.size() == 10);
-  const ConeMap m = cone_map(soup, adjacency, cones, read.quad_size);
+  const ConeMap m = cone_map(soup, adjacency, cones, size);
   for (double r : m.field.loop_rotation) CHECK(std::abs(r) < 1.0 * M_PI / 180);
   CHECK(m.report.inverted_triangles == 0);
   // every cone is exactly a lattice point in every chart at it (the extraction

@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 
@@ -540,6 +541,28 @@ TEST_CASE("mesh --singularities auto: a plate whose corners get two quads each f
   CHECK(q["min_scaled_jacobian"].get<double>() >= criteria["min_scaled_jacobian"].get<double>());
   CHECK(q["angle_dev_mean"].get<double>() <= criteria["max_mean_angle_deviation_deg"].get<double>());
   CHECK(q["hausdorff_rel"].get<double>() <= criteria["max_hausdorff_relative"].get<double>());
+}
+
+TEST_CASE("mesh reports a cone on the boundary away from the corners with its own reason" *
+          doctest::test_suite("slow")) {
+  // examples/link-lightening-hole.geo (a hole 1.4 quads across in the shaft): the
+  // route's boundary_cone_placement puts four valence-5 cones on the hole's boundary
+  const nlohmann::json j =
+      mesh_input(test::scratch_dir("cli_boundary_cones"), test::example("link-lightening-hole.geo"), "1.5%").report;
+  const auto& s = j["singularities"];
+  CHECK(s["route"] == "cones");
+  int corners = 0, on_hole = 0;
+  for (const auto& c : s["cones"]) {
+    if (!c["on_boundary"].get<bool>()) continue;
+    const double x = c["position"][0].get<double>() - 96, y = c["position"][1].get<double>();
+    const bool hole = std::abs(std::hypot(x, y) - 2.5) < 1e-6;
+    on_hole += hole;
+    corners += !hole && c["reason"] == "corner: one quad per 90 degrees of its angle";
+    if (hole) CHECK(c["reason"].get<std::string>().find("on the boundary: no room inside") != std::string::npos);
+  }
+  CHECK(corners == 4);
+  CHECK(on_hole == 4);
+  CHECK(j["quality"]["size_band_share"].get<double>() >= 0.95);
 }
 
 TEST_CASE("mesh --cone-placement cross-field: the smoothest cross field's singularities as the interior cones, "

@@ -1,6 +1,7 @@
 #include "tools/quadmesh/quad_output.h"
 
 #include "io/cad_curve_points.h"
+#include "libquadmesh/cones/cone_placement.h"
 #include "libquadmesh/quality/size_band.h"
 
 #include "tools/common/quality_json.h"
@@ -142,6 +143,19 @@ io::OutputMesh output_mesh(const QuadMeshResult& result, const QuadraticQuads* q
   return out;
 }
 
+namespace {
+
+/// The boundary vertices of result.surface the cone placement counts as corners
+/// (cone_placement.h corner_cones); none without cones.
+std::set<int> corner_vertices(const QuadMeshResult& result) {
+  std::set<int> out;
+  if (result.cones.empty()) return out;
+  for (const Cone& c : corner_cones(result.surface, surface_adjacency(result.surface))) out.insert(c.vertex);
+  return out;
+}
+
+}  // namespace
+
 MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, const MeshOptions& options,
                       double seconds, const QuadraticQuads* quadratic) {
   MeshSummary s;
@@ -151,8 +165,15 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
   s.quality = quad_quality(polygon_mesh(result.quads), &in.surface.soup, result.size_requested);
   for (const ZeroVertex& z : result.zero_vertices)
     if (!z.corner) (z.on_boundary ? s.expected_irregular_boundary : s.expected_irregular_interior)++;
-  for (const Cone& c : result.cones)  // the cone route: its interior cones are the irregular vertices
-    if (c.quads != 4 && !on_boundary[static_cast<std::size_t>(c.vertex)]) ++s.expected_irregular_interior;
+  // the cone route: its interior cones are the irregular vertices, and its boundary
+  // cones away from the corners (a straight boundary point in three quads)
+  const std::set<int> corners = corner_vertices(result);
+  for (const Cone& c : result.cones) {
+    if (!on_boundary[static_cast<std::size_t>(c.vertex)])
+      s.expected_irregular_interior += c.quads != 4;
+    else if (!corners.count(c.vertex))
+      ++s.expected_irregular_boundary;
+  }
   s.input_euler_characteristic = static_cast<int>(in.surface.report.euler_characteristic);
   s.input_boundary_loops = in.surface.report.boundary_loop_count();
   s.seconds = seconds;
@@ -209,10 +230,14 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
   for (const Cone& c : result.cones) {
     const Vec3& p = result.surface.points[static_cast<std::size_t>(c.vertex)];
     const bool boundary = on_boundary[static_cast<std::size_t>(c.vertex)];
+    const char* reason = !boundary                 ? interior_reason
+                         : corners.count(c.vertex) ? "corner: one quad per 90 degrees of its angle"
+                                                   : "Gauss-Bonnet, on the boundary: no room inside for the cone "
+                                                     "(a hole in a part a few quads wide)";
     cones.push_back({{"position", {p.x(), p.y(), p.z()}},
                      {"quads", c.quads},
                      {"on_boundary", boundary},
-                     {"reason", boundary ? "corner: one quad per 90 degrees of its angle" : interior_reason}});
+                     {"reason", reason}});
   }
   const auto share = [](double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); };
   j["singularities"] = {{"mode", options.singularities},

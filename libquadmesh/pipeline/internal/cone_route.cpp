@@ -51,6 +51,12 @@ ConePlacementOptions nearer_placement() {
   return nearer;
 }
 
+ConePlacementOptions boundary_cone_placement() {
+  ConePlacementOptions on_boundary;
+  on_boundary.boundary_cones = true;
+  return on_boundary;
+}
+
 namespace {
 
 /// Whether a surface of this topology has handles (genus > 0).
@@ -273,7 +279,8 @@ void judge_as_written(ConeCandidate& cones, const QuadMeshOptions& options, doub
 
 /// The first placement of cone_placements() (then nearer_placement(), when some
 /// gave sound quads but none of those had size_band_goal of them in the size
-/// band) whose quads at `lattice_factor` are
+/// band, or boundary_cone_placement(), when none gave sound quads) whose quads at
+/// `lattice_factor` are
 /// acceptable: sound, size_band_goal of them in the size band and none above
 /// max_size_ratio x the size, every corner in its
 /// quad count, and within the acceptance's distance of S as judged
@@ -301,16 +308,25 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
   // whether some placement's quads were sound, and whether one of those had
   // size_band_goal of them in the size band
   bool some_sound = false, sound_share_in_band = false;
-  bool nearer_added = false;
+  bool nearer_added = false, boundary_added = false;
   for (std::size_t start = 0; attempts_left > 0 && !found; start += width) {
     if (start >= placements.size()) {
-      // sound quads, but too few of them in the band: the cones nearer the boundary
-      // (a hole little wider than a quad, its cones kept 2 quads off, grades the
-      // quads round it out of the band)
-      if (nearer_added || !some_sound || sound_share_in_band || interior != InteriorCones::greedy) break;
-      placements.push_back(nearer_placement());
+      if (interior != InteriorCones::greedy) break;
+      if (!nearer_added && some_sound && !sound_share_in_band) {
+        // sound quads, but too few of them in the band: the cones nearer the
+        // boundary (a hole little wider than a quad, its cones kept 2 quads off,
+        // grades the quads round it out of the band)
+        placements.push_back(nearer_placement());
+        nearer_added = true;
+      } else if (!boundary_added && !some_sound) {
+        // none sound: cones on the boundary where the interior has no room for
+        // them (a hole in a shaft a few quads wide folds every interior placement)
+        placements.push_back(boundary_cone_placement());
+        boundary_added = nearer_added = true;
+      } else {
+        break;
+      }
       placements.back().rounding = rounding;
-      nearer_added = true;
     }
     const std::size_t count = std::min({width, placements.size() - start, static_cast<std::size_t>(attempts_left)});
     std::vector<ConeAttempt> attempts;
@@ -365,7 +381,7 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
 ConeCandidate cone_candidate(const FormSetup& setup, const QuadMeshOptions& options, SurfaceTopology input,
                              Stages& stages) {
   std::string failure;
-  int every_placement = static_cast<int>(cone_placements(InteriorCones::greedy, has_handles(input)).size()) + 1;
+  int every_placement = static_cast<int>(cone_placements(InteriorCones::greedy, has_handles(input)).size()) + 2;
   std::optional<ConeCandidate> cones =
       first_acceptable_placement(setup, options, input, stages, 1.0, every_placement, failure);
   if (!cones || !sound(cones->candidate.quality, input, options.acceptance)) {
@@ -375,7 +391,7 @@ ConeCandidate cone_candidate(const FormSetup& setup, const QuadMeshOptions& opti
     // candidate stands when this one finds nothing sound either
     stages.announce("no placement gave sound quads: the placements again, the seamless maps rounding the cut "
                     "translations first");
-    int second_pass = static_cast<int>(cone_placements(InteriorCones::greedy, has_handles(input)).size()) + 1;
+    int second_pass = static_cast<int>(cone_placements(InteriorCones::greedy, has_handles(input)).size()) + 2;
     std::string ignored;
     std::optional<ConeCandidate> again = first_acceptable_placement(setup, options, input, stages, 1.0, second_pass,
                                                                ignored, RoundingOrder::translations_first);

@@ -76,6 +76,13 @@ std::vector<ConePlacementOptions> cone_placements(InteriorCones interior = Inter
 /// with these).
 ConePlacementOptions nearer_placement();
 
+/// The placement tried last (greedy), when no placement before it gave sound quads:
+/// the defaults with boundary_cones on (cone_placement.h: a valence-5 cone on the
+/// boundary where the interior has no room for it). A connecting rod with a hole
+/// 1.4 quads across in its shaft 3.4 quads wide: every interior placement folds,
+/// this one gives 100% of the quads in the size band.
+ConePlacementOptions boundary_cone_placement();
+
 /// Sound: quads with the input's topology, no inverted or flipped quad, no dropped
 /// cell, no stray boundary point.
 bool sound(const CandidateQuality& c, SurfaceTopology input, const AcceptanceCriteria& criteria);
