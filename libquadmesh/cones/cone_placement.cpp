@@ -334,6 +334,15 @@ int cramped_boundary_extreme(const TriangleSoup& soup, const SurfaceAdjacency& a
   return best;
 }
 
+/// The boundary loop of `adjacency` that holds vertex v (-1: none).
+int loop_of(const SurfaceAdjacency& adjacency, int v) {
+  for (std::size_t l = 0; l < adjacency.boundary_loops.size(); ++l)
+    if (std::find(adjacency.boundary_loops[l].begin(), adjacency.boundary_loops[l].end(), v) !=
+        adjacency.boundary_loops[l].end())
+      return static_cast<int>(l);
+  return -1;
+}
+
 /// The length of a closed loop of vertices.
 double loop_length(const TriangleSoup& soup, const std::vector<int>& loop) {
   double length = 0;
@@ -447,40 +456,6 @@ std::vector<double> spread_targets(const SurfaceAdjacency& adjacency, const std:
   return target;
 }
 
-/// Each hole at most options.square_hole_length quads round, with no cone on it
-/// and no vertex of `eligible` within `room` of any of its vertices (a hole in a
-/// shaft a few quads wide: no interior cone fits beside it), made a square on the
-/// lattice: a valence-5 cone on the boundary (three quads) at four of its vertices
-/// a quarter of its length apart, the first where u is highest (the corners'
-/// metric with `deficit` spread). They go into `cones` at `corner_count` (which
-/// grows). Returns the quarter turns they take: 4 a hole.
-int square_holes(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const ConeMetricSolver& solver,
-                 const std::vector<double>& curvature, const std::vector<double>& area, double interior_area,
-                 const std::vector<char>& eligible, double room, double size, const ConePlacementOptions& options,
-                 int deficit, std::vector<Cone>& cones, std::size_t& corner_count) {
-  const std::vector<double> to_eligible = distance_from(soup, adjacency, eligible);
-  Eigen::VectorXd u;
-  int taken = 0;
-  for (const std::vector<int>& loop : adjacency.boundary_loops) {
-    const double length = loop_length(soup, loop);
-    if (length > options.square_hole_length * size || length < 4 * options.boundary_cone_spacing * size) continue;
-    const auto on_loop = [&](const Cone& c) { return std::find(loop.begin(), loop.end(), c.vertex) != loop.end(); };
-    if (std::any_of(cones.begin(), cones.end(), on_loop)) continue;
-    if (std::any_of(loop.begin(), loop.end(), [&](int v) { return to_eligible[static_cast<std::size_t>(v)] <= room; }))
-      continue;
-    if (u.size() == 0)
-      u = solver.solve(spread_targets(adjacency, quads_per_vertex(adjacency, cones), area, interior_area, deficit),
-                       curvature);
-    const int start = *std::max_element(loop.begin(), loop.end(), [&](int a, int b) { return u[a] < u[b]; });
-    for (int v : quarter_points(soup, loop, start)) {
-      cones.insert(cones.begin() + static_cast<std::ptrdiff_t>(corner_count), Cone{v, 3});
-      ++corner_count;
-    }
-    taken += 4;
-  }
-  return taken;
-}
-
 }  // namespace
 
 std::vector<Cone> corner_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
@@ -537,10 +512,10 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
   double interior_area = 0;
   for (std::size_t v = 0; v < area.size(); ++v)
     if (!adjacency.boundary_vertex[v]) interior_area += area[v];
-  if (greedy && options.boundary_cones)
-    deficit += square_holes(soup, adjacency, solver, curvature, area, interior_area, eligible,
-                            (boundary_distance + 1) * size, size, options, deficit, cones, corner_count);
   const int step = deficit > 0 ? 1 : -1;  // valence 3 (+1 quarter turn) or 5 (-1)
+  // with boundary_cones, a boundary vertex may take a cone where no eligible
+  // vertex is this near it along the edges
+  const auto boundary_room = [&] { return (boundary_distance + 1) * size; };
   std::vector<char> taken(soup.points.size(), 0);
   // vertices nearer than cone_spacing quads to a placed interior cone are taken
   // too: two cones closer than that compete for the same lattice cells
@@ -582,13 +557,30 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
     if (step < 0 && options.boundary_cones) {
       // where no interior vertex near the boundary may take the cone (a hole in a
       // shaft a few quads wide), on the boundary when the quads are smaller there
-      const int edge = cramped_boundary_extreme(soup, adjacency, u, eligible, (boundary_distance + 1) * size,
+      const int edge = cramped_boundary_extreme(soup, adjacency, u, eligible, boundary_room(),
                                                 options.boundary_cone_spacing * size, cones);
       if (edge >= 0 && (extreme < 0 || u[edge] > u[extreme])) {
-        cones.insert(cones.begin() + static_cast<std::ptrdiff_t>(corner_count), Cone{edge, 3});
-        ++corner_count;
-        mark_within(soup.points, soup.points[static_cast<std::size_t>(edge)], spacing, 1, taken);
-        deficit -= step;
+        // on a hole a few quads round with no cone yet, four a quarter of its
+        // length apart: the hole a square on the lattice, its quarter turns taken
+        // where they are
+        std::vector<int> on_boundary{edge};
+        const int loop = loop_of(adjacency, edge);
+        const std::vector<int>& vertices = adjacency.boundary_loops[static_cast<std::size_t>(loop)];
+        const double length = loop_length(soup, vertices);
+        const bool bare = std::none_of(cones.begin(), cones.end(), [&](const Cone& c) {
+          return std::find(vertices.begin(), vertices.end(), c.vertex) != vertices.end();
+        });
+        if (deficit <= -4 && bare && length <= options.square_hole_length * size &&
+            length >= 4 * options.boundary_cone_spacing * size) {
+          const std::array<int, 4> quarters = quarter_points(soup, vertices, edge);
+          on_boundary.assign(quarters.begin(), quarters.end());
+        }
+        for (int b : on_boundary) {
+          cones.insert(cones.begin() + static_cast<std::ptrdiff_t>(corner_count), Cone{b, 3});
+          ++corner_count;
+          mark_within(soup.points, soup.points[static_cast<std::size_t>(b)], spacing, 1, taken);
+          deficit -= step;
+        }
         continue;
       }
     }
@@ -653,8 +645,7 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
   settle(cones);
   if (greedy && options.pair_band_goal > 0) {
     const int interior = static_cast<int>(cones.size() - corner_count);
-    add_cone_pairs(soup, adjacency, solver, curvature, area, eligible, spacing, (boundary_distance + 1) * size, size,
-                   settle, options,
+    add_cone_pairs(soup, adjacency, solver, curvature, area, eligible, spacing, boundary_room(), size, settle, options,
                    static_cast<int>(allowed) - interior, cones);
   }
   return cones;

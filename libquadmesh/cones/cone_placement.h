@@ -66,11 +66,9 @@ struct ConePlacementOptions {
   bool boundary_cones = false;
   /// Such a cone keeps this far from every other cone (quads, straight line).
   double boundary_cone_spacing = 0.9;
-  /// With boundary_cones, a hole at most this long (quads) with no cone on it and
-  /// no room beside it for an interior cone (as above) is made a square on the
-  /// lattice first: four valence-5 cones on it a quarter of its length apart take
-  /// its quarter turns where they are (the rest of the placement then carries what
-  /// the corners and these leave).
+  /// When it falls on a hole at most this long (quads) with no cone on it yet, and
+  /// four valence-5 cones are still to place, they go on the hole a quarter of its
+  /// length apart: the hole a square on the lattice.
   double square_hole_length = 8.0;
   /// With several boundary loops, each cone goes, among the vertices whose u is
   /// within this of the extreme, where the field meets the loops best.
