@@ -370,8 +370,8 @@ std::array<int, 4> quarter_points(const TriangleSoup& soup, const std::vector<in
         off[k] = d;
         out[k] = v;
       }
-    along += (soup.points[static_cast<std::size_t>(loop[(first + i + 1) % n])] - soup.points[static_cast<std::size_t>(v)])
-                 .norm();
+    const int next = loop[(first + i + 1) % n];
+    along += (soup.points[static_cast<std::size_t>(next)] - soup.points[static_cast<std::size_t>(v)]).norm();
   }
   return out;
 }

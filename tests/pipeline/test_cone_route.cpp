@@ -34,6 +34,22 @@ FormSetup fertility_setup(Stages& stages) {
   return prepare_forms(std::move(soup), options, stages);
 }
 
+/// A CAD part read and meshed as `quadmesh mesh PATH --size 1.5%` does, with the
+/// defaults: its surface in `input`, the quads returned.
+QuadMeshResult mesh_cad_part(const std::string& path, TriangleSoup& input) {
+  QuadMeshOptions options;
+  options.size_relative = 0.015;
+  io::ReadOptions read;
+  read.quad_size_relative = options.size_relative;
+  input = analyze_topology(io::read_surface(path, read).soup).soup;
+  return mesh_quads(input, options);
+}
+
+/// mesh_cad_part of a .geo `text`, written to a scratch folder `name`.
+QuadMeshResult mesh_geo_text(const std::string& name, const std::string& text, TriangleSoup& input) {
+  return mesh_cad_part(test::write_text(test::scratch_dir(name), name + ".geo", text), input);
+}
+
 /// Issue 18's acceptance on the quads `q` of a surface with `chi` and `loops`:
 /// unfolded, the scaled Jacobian, angle and distance criteria, at least `band` of
 /// them in the size band, and its `corners` corners in their quad counts.
@@ -214,17 +230,12 @@ TEST_CASE("a hole little wider than a quad in a strip: the last placement brings
   // (33% in the band); 1.2 quads off (nearer_placement, tried when the sound
   // placements before it all missed the band), none leaves it
   CHECK(nearer_placement().boundary_distance < cone_placements().front().boundary_distance);
-  const std::string dir = test::scratch_dir("strip_hole");
-  const std::string geo = test::write_text(dir, "strip-hole.geo",
-                                           "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, -7, 0, 140, 14};\n"
-                                           "Disk(2) = {70, 0, 0, 3};\n"
-                                           "BooleanDifference{ Surface{1}; Delete; }{ Surface{2}; Delete; }\n");
-  QuadMeshOptions options;
-  options.size_relative = 0.015;
-  io::ReadOptions read;
-  read.quad_size_relative = options.size_relative;
-  const TriangleSoup input = analyze_topology(io::read_surface(geo, read).soup).soup;
-  const QuadMeshResult r = mesh_quads(input, options);
+  TriangleSoup input;
+  const QuadMeshResult r = mesh_geo_text("strip_hole",
+                                         "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, -7, 0, 140, 14};\n"
+                                         "Disk(2) = {70, 0, 0, 3};\n"
+                                         "BooleanDifference{ Surface{1}; Delete; }{ Surface{2}; Delete; }\n",
+                                         input);
   REQUIRE(r.singularities == "cones");
   const QuadQuality q = quad_quality(polygon_mesh(r.quads), &input, r.size_requested);
   check_acceptance(q, 0, 2, 0.95, 4);
@@ -239,13 +250,8 @@ TEST_CASE("a lightening hole in a connecting rod's shaft: the route's last place
   // valence-5 cones on the hole's boundary do not
   CHECK(boundary_cone_placement().boundary_cones);
   CHECK(!cone_placements().front().boundary_cones);
-  QuadMeshOptions options;
-  options.size_relative = 0.015;
-  io::ReadOptions read;
-  read.quad_size_relative = options.size_relative;
-  const TriangleSoup input =
-      analyze_topology(io::read_surface(test::example("link-lightening-hole.geo"), read).soup).soup;
-  const QuadMeshResult r = mesh_quads(input, options);
+  TriangleSoup input;
+  const QuadMeshResult r = mesh_cad_part(test::example("link-lightening-hole.geo"), input);
   REQUIRE(r.singularities == "cones");
   const SurfaceAdjacency adjacency = surface_adjacency(r.surface);
   int on_hole = 0;
@@ -254,4 +260,33 @@ TEST_CASE("a lightening hole in a connecting rod's shaft: the route's last place
                std::abs((r.surface.points[static_cast<std::size_t>(c.vertex)] - Vec3(96, 0, 0)).norm() - 2.5) < 1e-6;
   CHECK(on_hole == 4);
   check_acceptance(quad_quality(polygon_mesh(r.quads), &input, r.size_requested), -2, 4, 0.95, 4);
+}
+
+TEST_CASE("an angle bracket with a bolt hole in each arm and at the heel: the fallback placements mesh it" *
+          doctest::test_suite("slow")) {
+  // arms 15 wide (8.8 quads at 1.5% of the diagonal), holes of radius 3 (3.5 quads
+  // across) in each arm and at the heel: twelve valence-5 cones, and every one of
+  // cone_placements() folds the map. fallback_placements: none sound, so the cones
+  // 1.5 quads from the boundary from the start (then the boundary cones)
+  const std::vector<ConePlacementOptions> off_band = fallback_placements(true);
+  REQUIRE(off_band.size() == 1);
+  CHECK(off_band[0].boundary_distance == nearer_placement().boundary_distance);
+  const std::vector<ConePlacementOptions> none_sound = fallback_placements(false);
+  REQUIRE(none_sound.size() == 2);
+  CHECK(none_sound[0].boundary_distance == doctest::Approx(1.5));
+  CHECK(!none_sound[0].boundary_cones);
+  CHECK(none_sound[1].boundary_cones);
+  TriangleSoup input;
+  const QuadMeshResult r = mesh_geo_text(
+      "angle_bracket",
+      "SetFactory(\"OpenCASCADE\");\n"
+      "Point(1) = {0, 0, 0}; Point(2) = {80, 0, 0}; Point(3) = {80, 15, 0}; Point(4) = {15, 15, 0};\n"
+      "Point(5) = {15, 80, 0}; Point(6) = {0, 80, 0};\n"
+      "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 5}; Line(5) = {5, 6}; Line(6) = {6, 1};\n"
+      "Curve Loop(1) = {1:6}; Plane Surface(1) = {1};\n"
+      "Disk(2) = {65, 7.5, 0, 3}; Disk(3) = {7.5, 65, 0, 3}; Disk(4) = {7.5, 7.5, 0, 3};\n"
+      "BooleanDifference(5) = { Surface{1}; Delete; }{ Surface{2:4}; Delete; };\n",
+      input);
+  REQUIRE(r.singularities == "cones");
+  check_acceptance(quad_quality(polygon_mesh(r.quads), &input, r.size_requested), -2, 4, 0.9, 6);
 }

@@ -57,6 +57,14 @@ ConePlacementOptions boundary_cone_placement() {
   return on_boundary;
 }
 
+std::vector<ConePlacementOptions> fallback_placements(bool some_sound) {
+  if (some_sound) return {nearer_placement()};
+  ConePlacementOptions narrow;
+  narrow.boundary_distance = narrow.narrow_boundary_distance;
+  narrow.cone_spacing = narrow.narrow_cone_spacing;
+  return {narrow, boundary_cone_placement()};
+}
+
 namespace {
 
 /// Whether a surface of this topology has handles (genus > 0).
@@ -277,9 +285,8 @@ void judge_as_written(ConeCandidate& cones, const QuadMeshOptions& options, doub
   c.result.judged_deviation = cones.distance * diagonal;
 }
 
-/// The first placement of cone_placements() (then nearer_placement(), when some
-/// gave sound quads but none of those had size_band_goal of them in the size
-/// band, or boundary_cone_placement(), when none gave sound quads) whose quads at
+/// The first placement of cone_placements() (then fallback_placements(), when none
+/// gave sound quads with size_band_goal of them in the size band) whose quads at
 /// `lattice_factor` are
 /// acceptable: sound, size_band_goal of them in the size band and none above
 /// max_size_ratio x the size, every corner in its
@@ -308,25 +315,15 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
   // whether some placement's quads were sound, and whether one of those had
   // size_band_goal of them in the size band
   bool some_sound = false, sound_share_in_band = false;
-  bool nearer_added = false, boundary_added = false;
+  bool fallbacks_added = false;
   for (std::size_t start = 0; attempts_left > 0 && !found; start += width) {
     if (start >= placements.size()) {
-      if (interior != InteriorCones::greedy) break;
-      if (!nearer_added && some_sound && !sound_share_in_band) {
-        // sound quads, but too few of them in the band: the cones nearer the
-        // boundary (a hole little wider than a quad, its cones kept 2 quads off,
-        // grades the quads round it out of the band)
-        placements.push_back(nearer_placement());
-        nearer_added = true;
-      } else if (!boundary_added && !some_sound) {
-        // none sound: cones on the boundary where the interior has no room for
-        // them (a hole in a shaft a few quads wide folds every interior placement)
-        placements.push_back(boundary_cone_placement());
-        boundary_added = nearer_added = true;
-      } else {
-        break;
+      if (fallbacks_added || interior != InteriorCones::greedy || sound_share_in_band) break;
+      fallbacks_added = true;
+      for (ConePlacementOptions& p : fallback_placements(some_sound)) {
+        p.rounding = rounding;
+        placements.push_back(p);
       }
-      placements.back().rounding = rounding;
     }
     const std::size_t count = std::min({width, placements.size() - start, static_cast<std::size_t>(attempts_left)});
     std::vector<ConeAttempt> attempts;

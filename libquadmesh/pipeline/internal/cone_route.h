@@ -68,20 +68,28 @@ std::vector<ConeAttempt> cone_attempts_side_by_side(const FormSetup& setup,
 std::vector<ConePlacementOptions> cone_placements(InteriorCones interior = InteriorCones::greedy,
                                                   bool handles = false);
 
-/// The placement tried after cone_placements() (greedy) when some gave sound quads
-/// but none of those had size_band_goal of them in the size band: interior cones
+/// A placement tried after cone_placements() (greedy; fallback_placements) when
+/// some gave sound quads but none of those had size_band_goal of them in the size band: interior cones
 /// 1.2 quads from the boundary and 1.7 apart. Round a hole little wider than a
 /// quad, cones kept 2 quads off grade the quads down to a fraction of the size (a
 /// strip 6.6 quads wide with a hole 2.8 across: 33% of the quads in the band, 100%
 /// with these).
 ConePlacementOptions nearer_placement();
 
-/// The placement tried last (greedy), when no placement before it gave sound quads:
-/// the defaults with boundary_cones on (cone_placement.h: a valence-5 cone on the
-/// boundary where the interior has no room for it). A connecting rod with a hole
-/// 1.4 quads across in its shaft 3.4 quads wide: every interior placement folds,
-/// this one gives 100% of the quads in the size band.
+/// A placement tried after cone_placements() (greedy; fallback_placements) when
+/// none gave sound quads: the defaults with boundary_cones on (cone_placement.h: a
+/// valence-5 cone on the boundary where the interior has no room for it). A
+/// connecting rod with a hole 1.4 quads across in its shaft 3.4 quads wide: every
+/// interior placement folds, this one gives 100% of the quads in the size band.
 ConePlacementOptions boundary_cone_placement();
+
+/// What the route tries after cone_placements() (greedy) when none gave sound quads
+/// with size_band_goal of them in the size band: with `some_sound` quads (off the
+/// band), nearer_placement(); with none, the interior cones 1.5 quads from the
+/// boundary and 2 apart from the start (an L-bracket whose arms are 9 quads wide with
+/// a hole 3.5 quads across in each: every other placement folds, this one keeps 90%
+/// of the quads in the band), then boundary_cone_placement().
+std::vector<ConePlacementOptions> fallback_placements(bool some_sound);
 
 /// Sound: quads with the input's topology, no inverted or flipped quad, no dropped
 /// cell, no stray boundary point.
