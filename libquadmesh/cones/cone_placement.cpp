@@ -334,15 +334,6 @@ int cramped_boundary_extreme(const TriangleSoup& soup, const SurfaceAdjacency& a
   return best;
 }
 
-/// The boundary loop of `adjacency` that holds vertex v (-1: none).
-int loop_of(const SurfaceAdjacency& adjacency, int v) {
-  for (std::size_t l = 0; l < adjacency.boundary_loops.size(); ++l)
-    if (std::find(adjacency.boundary_loops[l].begin(), adjacency.boundary_loops[l].end(), v) !=
-        adjacency.boundary_loops[l].end())
-      return static_cast<int>(l);
-  return -1;
-}
-
 /// The length of a closed loop of vertices.
 double loop_length(const TriangleSoup& soup, const std::vector<int>& loop) {
   double length = 0;
@@ -564,7 +555,7 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
         // length apart: the hole a square on the lattice, its quarter turns taken
         // where they are
         std::vector<int> on_boundary{edge};
-        const int loop = loop_of(adjacency, edge);
+        const int loop = adjacency.loop_of_vertex[static_cast<std::size_t>(edge)];
         const std::vector<int>& vertices = adjacency.boundary_loops[static_cast<std::size_t>(loop)];
         const double length = loop_length(soup, vertices);
         const bool bare = std::none_of(cones.begin(), cones.end(), [&](const Cone& c) {
