@@ -19,8 +19,13 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 /// The faint diagonal added to L, relative to its mean off-diagonal weight.
 constexpr double regularization = 1e-10;
 /// Largest turning error (radians) of the field at a vertex: the field then
-/// turns by its cone to well within the cross field's alignment tolerance.
+/// turns by its cone to well within the cross field's alignment tolerance...
 constexpr double turning_tolerance = 1e-8;
+/// ...or, where the faint diagonal is larger (a mesh of large mean weight: split
+/// slivers), the error it leaves at a vertex whose u is this: (L + eps) u = rhs
+/// leaves L u - rhs = -eps u, and a vertex whose inner edges cannot turn the
+/// field is held by eps alone, at u = rhs / eps, far beyond.
+constexpr double max_held_u = 100;
 
 /// The cotan Laplacian over inner edges.
 SparseMatrix inner_edge_laplacian(const TriangleSoup& soup, const SurfaceAdjacency& adjacency) {
@@ -113,8 +118,9 @@ Eigen::VectorXd ConeMetricSolver::solve(const std::vector<double>& target_curvat
   // every vertex must turn the field as asked; one whose inner edges carry no
   // weight cannot turn it at all
   const Eigen::VectorXd residual = factor_->L * u - rhs;
+  const double tolerance = std::max(turning_tolerance, max_held_u * factor_->epsilon);
   for (std::size_t v = 0; v < nV; ++v)
-    if (std::abs(residual[static_cast<Eigen::Index>(v)]) > turning_tolerance)
+    if (std::abs(residual[static_cast<Eigen::Index>(v)]) > tolerance)
       throw Error(ErrorCode::unsupported, describe_vertex(soup_, static_cast<int>(v)) +
                                               ": its triangles cannot turn by " +
                                               std::to_string(target_curvature[v] * 180 / M_PI) +

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "libquadmesh/cones/boundary_corners.h"
 #include "libquadmesh/cones/cone_map.h"
 #include "libquadmesh/cones/cone_metric.h"
 #include "libquadmesh/cones/cross_field.h"
@@ -449,16 +450,12 @@ std::vector<double> spread_targets(const SurfaceAdjacency& adjacency, const std:
 
 }  // namespace
 
-std::vector<Cone> corner_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
-                               const ConePlacementOptions& options) {
-  const std::vector<double> curvature = vertex_curvature(soup, adjacency);
+std::vector<Cone> corner_cones(const TriangleSoup& soup, double size, const ConePlacementOptions& options) {
+  QM_ASSERT(size > 0);
   std::vector<Cone> cones;
-  for (std::size_t v = 0; v < soup.points.size(); ++v) {
-    if (!adjacency.boundary_vertex[v]) continue;
-    const double angle = M_PI - curvature[v];
-    if (std::abs(angle - M_PI) <= options.corner_angle_deg * M_PI / 180) continue;
-    const int q = std::max(1, static_cast<int>(std::lround(angle / quarter_turn)));
-    if (q != 2) cones.push_back({static_cast<int>(v), q});
+  for (const BoundaryCorner& c : boundary_corners(soup, corner_window_quads * size, options.corner_angle_deg)) {
+    const int q = corner_quads_wanted(c.angle_deg);
+    if (q != 2) cones.push_back({c.vertex, q});
   }
   return cones;
 }
@@ -466,7 +463,7 @@ std::vector<Cone> corner_cones(const TriangleSoup& soup, const SurfaceAdjacency&
 std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, double size,
                               const ConePlacementOptions& options) {
   QM_ASSERT(size > 0);
-  std::vector<Cone> cones = corner_cones(soup, adjacency, options);
+  std::vector<Cone> cones = corner_cones(soup, size, options);
   // the cones on the boundary (the corners, then any boundary cones) come first;
   // the interior ones, which the settling moves, after them
   const std::size_t corners_only = cones.size();
@@ -474,18 +471,13 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
   int deficit = 4 * euler_characteristic(adjacency);
   for (const Cone& c : cones) deficit -= 2 - c.quads;
   const std::vector<double> area = vertex_areas(soup);
-  // a quad mesh with more singular vertices than that is not what auto is for
-  // (and its seamless map would take long: a boundary line per corner): refused
-  // before any solve. A scan's ragged boundary has such corners by the hundred.
+  // a quad mesh with more interior singular vertices than that is not what auto
+  // is for (issue 18's bound): refused before any solve when the corners leave
+  // more (the corners themselves are as many as the boundary has at the quad
+  // scale: boundary_corners)
   double total_area = 0;
   for (double a : area) total_area += a;
   const double allowed = std::max(options.max_interior_cones, options.max_interior_cone_share * total_area / (size * size));
-  if (static_cast<double>(cones.size()) > allowed)
-    throw Error(ErrorCode::unsupported,
-                fmt::format("{} boundary vertices are corners (more than {:g} degrees from straight), more than the "
-                            "{:.0f} cones allowed (max({:g}, {:g}% of the quads)): a ragged boundary",
-                            cones.size(), options.corner_angle_deg, allowed, options.max_interior_cones,
-                            100 * options.max_interior_cone_share));
   const bool greedy = options.interior == InteriorCones::greedy;
   if (greedy && deficit == 0 && !(options.pair_band_goal > 0)) return cones;
 
@@ -638,6 +630,18 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
     const int interior = static_cast<int>(cones.size() - corner_count);
     add_cone_pairs(soup, adjacency, solver, curvature, area, eligible, spacing, boundary_room(), size, settle, options,
                    static_cast<int>(allowed) - interior, cones);
+  }
+  if (options.min_metric_band > 0) {
+    std::vector<char> placed(area.size(), 0);
+    for (const Cone& c : cones) placed[static_cast<std::size_t>(c.vertex)] = 1;
+    const MetricBand band =
+        metric_band(solver.solve(target_curvature(adjacency, quads_per_vertex(adjacency, cones)), curvature), area,
+                    placed);
+    if (band.share < options.min_metric_band)
+      throw Error(ErrorCode::unsupported,
+                  fmt::format("the {} cones leave {:.0f}% of the area with quads within [0.5, 2] x the size (up to "
+                              "{:.0f} x): not mapped",
+                              cones.size(), 100 * band.share, band.largest));
   }
   return cones;
 }

@@ -2,8 +2,10 @@
 // as its angle asks, and the interior cones that Gauss-Bonnet then demands,
 // placed greedily on the conformal factor [Ben-Chen, Gotsman, Bunin 2008].
 //
-// Corners: a boundary vertex whose angle alpha (the sum of its triangles' angles)
-// is away from pi gets q = max(1, round(alpha / (pi/2))) quads.
+// Corners: a boundary vertex whose angle alpha at the quad scale (the boundary's
+// turning within half a quad each way, boundary_corners.h: on a CAD part the sum
+// of its triangles' angles) is away from pi gets q = max(1, round(alpha / (pi/2)))
+// quads; the vertices between, a scan's teeth among them, are straight (q = 2).
 // Interior: the corners leave D = 4 chi - sum (2 - q) quarter turns to the inside
 // (a plate with two holes and four right corners: D = -8, eight valence-5 cones).
 // They are placed one at a time: with the cones placed so far concentrated and the
@@ -19,6 +21,7 @@
 // loop_alignment.h takes.
 #pragma once
 
+#include "libquadmesh/cones/boundary_corners.h"
 #include "libquadmesh/cones/cone_set.h"
 #include "libquadmesh/cones/seamless_map.h"
 
@@ -37,13 +40,13 @@ enum class InteriorCones {
 
 struct ConePlacementOptions {
   InteriorCones interior = InteriorCones::greedy;
-  /// A boundary vertex counts as a corner when its angle differs from pi by more
-  /// than this (degrees): 45 puts the change of quad count half-way between.
-  double corner_angle_deg = 45.0;
+  /// A boundary vertex counts as a corner when its angle at the quad scale
+  /// (boundary_corners.h) differs from pi by more than this (degrees): 45 puts the
+  /// change of quad count half-way between.
+  double corner_angle_deg = corner_angle_tolerance_deg;
   /// At most max(max_interior_cones, max_interior_cone_share x the quads the area
-  /// holds at the size) interior cones (issue 18's bound on singular vertices),
-  /// and as many corners: a surface whose corners are more, or leave more, is
-  /// refused (qm::Error, unsupported).
+  /// holds at the size) interior cones (issue 18's bound on singular vertices): a
+  /// surface whose corners leave more is refused (qm::Error, unsupported).
   double max_interior_cones = 24;
   double max_interior_cone_share = 0.01;
   /// Interior cones keep this far from the boundary (in quads of the target size):
@@ -90,6 +93,13 @@ struct ConePlacementOptions {
   double pair_band_goal = 0.95;
   /// ...or a quad size somewhere above this many times the size.
   double pair_largest = 3.0;
+  /// A placement whose metric leaves less than this share of the area with its
+  /// quad size within [0.5, 2] x the size is refused (qm::Error, unsupported)
+  /// rather than mapped: its quads cannot come near the band, and on a large scan
+  /// a map costs seconds (bunny-open's ears: 41-52% of the area, quads up to 3400 x
+  /// the size). The placements kept on the shared meshes and examples have 85-100%,
+  /// pig's tried ones 57-93%. 0: every placement is mapped.
+  double min_metric_band = 0.55;
   /// Then the interior cones move, a ring at a time, while the quad sizes spread
   /// less (the area-weighted variance of the log scale u), for at most this many
   /// sweeps (0: they stay)...
@@ -103,9 +113,10 @@ struct ConePlacementOptions {
   RoundingOrder rounding = RoundingOrder::cones_first;
 };
 
-/// The corner cones: boundary vertices whose angle is away from pi.
-std::vector<Cone> corner_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
-                               const ConePlacementOptions& options = {});
+/// The corner cones for quads of edge `size` (> 0): the corners of the boundary
+/// at the quad scale (boundary_corners.h, a window of corner_window_quads x size),
+/// each in corner_quads_wanted quads (the quality module counts the same corners).
+std::vector<Cone> corner_cones(const TriangleSoup& soup, double size, const ConePlacementOptions& options = {});
 
 /// The corner cones and the interior cones that Gauss-Bonnet demands after them,
 /// for quads of edge `size` (> 0). Throws qm::Error (unsupported) when no interior

@@ -12,18 +12,30 @@
 namespace qm {
 
 namespace {
+
 constexpr int max_passes = 8;
+/// A boundary vertex whose turn (radians) is more than this times its inner
+/// edges' weight would make u jump by more than about 1 (the scale by e) at it.
+constexpr double max_turn_per_weight = 1.0;
+/// Turns below this (radians) are the rounding of a CAD corner's angle.
+constexpr double min_turn = 1e-6;
+
+/// Per point, the sum of its triangles' angles.
+std::vector<double> angle_sums(const TriangleSoup& soup) {
+  std::vector<double> total(soup.points.size(), 0.0);
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k)
+      total[static_cast<std::size_t>(soup.triangles[f][static_cast<std::size_t>(k)])] += corner_angle(soup, f, k);
+  return total;
+}
+
 }  // namespace
 
 std::vector<double> opened_corners(const TriangleSoup& soup, const std::vector<int>& quads) {
   std::vector<double> angle(3 * soup.triangles.size());
-  std::vector<double> total(soup.points.size(), 0.0);
   for (std::size_t f = 0; f < soup.triangles.size(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      angle[3 * f + static_cast<std::size_t>(k)] = corner_angle(soup, f, k);
-      total[static_cast<std::size_t>(soup.triangles[f][static_cast<std::size_t>(k)])] +=
-          angle[3 * f + static_cast<std::size_t>(k)];
-    }
+    for (int k = 0; k < 3; ++k) angle[3 * f + static_cast<std::size_t>(k)] = corner_angle(soup, f, k);
+  const std::vector<double> total = angle_sums(soup);
   for (std::size_t f = 0; f < soup.triangles.size(); ++f)
     for (std::size_t k = 0; k < 3; ++k) {
       const auto v = static_cast<std::size_t>(soup.triangles[f][k]);
@@ -32,8 +44,13 @@ std::vector<double> opened_corners(const TriangleSoup& soup, const std::vector<i
   return angle;
 }
 
-WideCornerSplits split_wide_corners(TriangleSoup& soup, const std::vector<Cone>& cones, double max_opened) {
-  QM_ASSERT(max_opened > 0);
+namespace {
+
+/// The splits of split_wide_corners and split_turned_boundary: pass after pass,
+/// the edge opposite each corner (3 f + k) that `choose(soup, adjacency, quads)`
+/// names, the first named first, a triangle once per pass.
+template <typename Choose>
+WideCornerSplits split_chosen_corners(TriangleSoup& soup, const std::vector<Cone>& cones, const Choose& choose) {
   if (!soup.point_labels.empty()) soup.point_labels.resize(soup.points.size(), -1);
   WideCornerSplits out;
   SurfaceAdjacency& adjacency = out.adjacency;
@@ -42,22 +59,13 @@ WideCornerSplits split_wide_corners(TriangleSoup& soup, const std::vector<Cone>&
     adjacency = surface_adjacency(soup);
     current = true;
     const std::vector<int> quads = quads_per_vertex(adjacency, cones);
-    const std::vector<double> opened = opened_corners(soup, quads);
-    // the widest corners at cones first (a regular vertex keeps about its angles);
-    // a triangle takes one split per pass
-    std::vector<std::pair<double, int>> wide;
-    for (std::size_t c = 0; c < opened.size(); ++c) {
-      const auto v = static_cast<std::size_t>(soup.triangles[c / 3][c % 3]);
-      const bool cone = quads[v] != (adjacency.boundary_vertex[v] ? 2 : 4);
-      if (cone && opened[c] > max_opened) wide.push_back({opened[c], static_cast<int>(c)});
-    }
+    const std::vector<int> wide = choose(soup, adjacency, quads);
     if (wide.empty()) break;
-    std::sort(wide.begin(), wide.end(), std::greater<>());
     const EdgeIncidence inc = edge_incidence(soup);
     CurveEdgeIndex curves = curve_edge_index(soup);
     std::vector<char> touched(soup.triangles.size(), 0);
     std::size_t pass_splits = 0;
-    for (const auto& [angle, corner] : wide) {
+    for (int corner : wide) {
       const int f = corner / 3, k = corner % 3;
       const int h = 3 * f + (k + 1) % 3;  // the side opposite corner k
       const int e = inc.halfedge_edge[static_cast<std::size_t>(h)];
@@ -79,6 +87,82 @@ WideCornerSplits split_wide_corners(TriangleSoup& soup, const std::vector<Cone>&
   }
   if (!current) adjacency = surface_adjacency(soup);
   return out;
+}
+
+/// The corners opened wider than `max_opened` at the vertices `takes(v, quads)`
+/// selects, the widest first.
+template <typename Takes>
+std::vector<int> wide_corners_at(const TriangleSoup& soup, const std::vector<int>& quads, double max_opened,
+                                 const Takes& takes) {
+  const std::vector<double> opened = opened_corners(soup, quads);
+  std::vector<std::pair<double, int>> wide;
+  for (std::size_t c = 0; c < opened.size(); ++c)
+    if (opened[c] > max_opened && takes(static_cast<std::size_t>(soup.triangles[c / 3][c % 3])))
+      wide.push_back({opened[c], static_cast<int>(c)});
+  std::sort(wide.begin(), wide.end(), std::greater<>());
+  std::vector<int> out;
+  for (const auto& w : wide) out.push_back(w.second);
+  return out;
+}
+
+/// Per point, the cotangent weights of its inner edges summed: what turns the
+/// cone metric's field there (cone_metric.h; 0 at a corner in one triangle).
+std::vector<double> inner_edge_weight(const TriangleSoup& soup, const SurfaceAdjacency& adjacency) {
+  std::vector<double> weight(soup.points.size(), 0.0);
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
+    const Triangle& t = soup.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      const int i = t[static_cast<std::size_t>((k + 1) % 3)], j = t[static_cast<std::size_t>((k + 2) % 3)];
+      if (adjacency.find(j, i).face < 0) continue;  // a boundary edge
+      const double w = 0.5 / std::tan(corner_angle(soup, f, k));
+      weight[static_cast<std::size_t>(i)] += w;
+      weight[static_cast<std::size_t>(j)] += w;
+    }
+  }
+  return weight;
+}
+
+}  // namespace
+
+WideCornerSplits split_wide_corners(TriangleSoup& soup, const std::vector<Cone>& cones, double max_opened) {
+  QM_ASSERT(max_opened > 0);
+  // at cones (a regular vertex keeps about its own angles)
+  return split_chosen_corners(soup, cones, [&](const TriangleSoup& s, const SurfaceAdjacency& adjacency,
+                                               const std::vector<int>& quads) {
+    return wide_corners_at(s, quads, max_opened,
+                           [&](std::size_t v) { return quads[v] != (adjacency.boundary_vertex[v] ? 2 : 4); });
+  });
+}
+
+WideCornerSplits split_turned_boundary(TriangleSoup& soup, const std::vector<Cone>& cones) {
+  return split_chosen_corners(soup, cones, [](const TriangleSoup& s, const SurfaceAdjacency& adjacency,
+                                              const std::vector<int>& quads) {
+    const std::vector<double> total = angle_sums(s);
+    const std::vector<double> weight = inner_edge_weight(s, adjacency);
+    // the boundary vertices the metric must turn by more than their inner edges
+    // take at max_turn_per_weight
+    std::vector<char> turned(s.points.size(), 0);
+    for (std::size_t v = 0; v < s.points.size(); ++v)
+      turned[v] = adjacency.boundary_vertex[v] &&
+                  std::abs(quads[v] * quarter_turn - total[v]) > max_turn_per_weight * std::max(weight[v], 0.0) &&
+                  std::abs(quads[v] * quarter_turn - total[v]) > min_turn;
+    std::vector<int> out = wide_corners_at(s, quads, max_turned_corner, [&](std::size_t v) { return turned[v] != 0; });
+    // and the widest corner of one whose corners are none that wide
+    std::vector<char> has(s.points.size(), 0);
+    for (int c : out) has[static_cast<std::size_t>(s.triangles[static_cast<std::size_t>(c / 3)][static_cast<std::size_t>(c % 3)])] = 1;
+    std::vector<int> widest(s.points.size(), -1);
+    for (std::size_t f = 0; f < s.triangles.size(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        const auto v = static_cast<std::size_t>(s.triangles[f][static_cast<std::size_t>(k)]);
+        const int c = static_cast<int>(3 * f) + k;
+        if (turned[v] && !has[v] &&
+            (widest[v] < 0 || corner_angle(s, f, k) > corner_angle(s, static_cast<std::size_t>(widest[v] / 3), widest[v] % 3)))
+          widest[v] = c;
+      }
+    for (int c : widest)
+      if (c >= 0) out.push_back(c);
+    return out;
+  });
 }
 
 }  // namespace qm

@@ -21,6 +21,10 @@ namespace qm {
 /// bends the metric's angles near cones.
 constexpr double max_opened_corner = 0.95 * M_PI;
 
+/// The widest a corner at a boundary vertex the metric turns may open (radians):
+/// wider, its triangle is split (split_turned_boundary).
+constexpr double max_turned_corner = 0.5 * M_PI;
+
 /// Per triangle corner (3 f + k), the angle the cone metric opens it to: its angle
 /// times n pi/2 over its vertex's total angle, n from quads_per_vertex.
 std::vector<double> opened_corners(const TriangleSoup& soup, const std::vector<int>& quads);
@@ -40,5 +44,20 @@ struct WideCornerSplits {
 /// soup; `cones` valid for it (quads_per_vertex).
 WideCornerSplits split_wide_corners(TriangleSoup& soup, const std::vector<Cone>& cones,
                                double max_opened = max_opened_corner);
+
+/// Splits, at every boundary vertex whose angle in its quads (quads_per_vertex)
+/// differs from its own by more than its inner edges can turn (the sum of their
+/// cotangent weights: a turn over that would make the cone metric's u jump by more
+/// than 1 there), the edge opposite each of its corners the metric opens wider
+/// than max_turned_corner, or else its widest corner's, as split_wide_corners
+/// does, pass after pass. Such a vertex is a tooth of a scanned boundary that the
+/// corners at the quad scale make straight (boundary_corners.h), or a corner whose
+/// angle at that scale is not its own, in one or two triangles whose one inner
+/// edge has little weight, or none; unsplit, u would jump by tens there (the scale
+/// by 10^20) or the metric could not turn it at all. An edge that bisects a corner
+/// of angle a has weight sin(a) / (2 sin(b) sin(c)), b and c the triangle's other
+/// two angles. Nothing on a CAD part, whose corners are their own angle.
+/// Precondition as split_wide_corners.
+WideCornerSplits split_turned_boundary(TriangleSoup& soup, const std::vector<Cone>& cones);
 
 }  // namespace qm

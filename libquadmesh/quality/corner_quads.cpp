@@ -47,97 +47,14 @@ BoundaryPoints boundary_points(const PolygonMesh& mesh) {
 
 bool within(double x, double low, double high) { return x >= low && x <= high; }
 
-/// The point `distance` along the closed polyline `loop` from its vertex `i`,
-/// forwards (direction +1) or backwards (-1); `length` per edge k -> k + 1.
-Vec3 along_loop(const TriangleSoup& soup, const std::vector<int>& loop, const std::vector<double>& length,
-                std::size_t i, int direction, double distance) {
-  const std::size_t n = loop.size();
-  std::size_t at = i;
-  for (std::size_t steps = 0; steps < n; ++steps) {
-    const std::size_t next = direction > 0 ? (at + 1) % n : (at + n - 1) % n;
-    const double edge = length[direction > 0 ? at : next];
-    const Vec3& a = soup.points[static_cast<std::size_t>(loop[at])];
-    const Vec3& b = soup.points[static_cast<std::size_t>(loop[next])];
-    if (edge >= distance) return a + (b - a) * (edge > 0 ? distance / edge : 0.0);
-    distance -= edge;
-    at = next;
-  }
-  return soup.points[static_cast<std::size_t>(loop[at])];
-}
-
-double angle_deg(const Vec3& a, const Vec3& b) {
-  return angle_between(a, b) * 180 / M_PI;
-}
-
 }  // namespace
-
-std::vector<BoundaryCorner> boundary_corners(const TriangleSoup& reference, double window) {
-  QM_ASSERT(window > 0);
-  const SurfaceAdjacency adjacency = surface_adjacency(reference);
-  const std::vector<double> curvature = vertex_curvature(reference, adjacency);
-  std::vector<BoundaryCorner> corners;
-  for (const std::vector<int>& loop : adjacency.boundary_loops) {
-    const std::size_t n = loop.size();
-    std::vector<double> length(n);
-    double perimeter = 0;
-    for (std::size_t k = 0; k < n; ++k) {
-      length[k] = (reference.points[static_cast<std::size_t>(loop[(k + 1) % n])] -
-                   reference.points[static_cast<std::size_t>(loop[k])]).norm();
-      perimeter += length[k];
-    }
-    const double w = std::min(window, perimeter / 4);
-    // the turning within the window and the chord angle, per vertex of the loop
-    std::vector<double> angle(n, 180.0);
-    std::vector<char> candidate(n, 0);
-    for (std::size_t i = 0; i < n; ++i) {
-      double turning = curvature[static_cast<std::size_t>(loop[i])];
-      for (int direction : {1, -1}) {
-        double travelled = 0;
-        for (std::size_t at = i, steps = 0; steps + 1 < n; ++steps) {
-          const std::size_t next = direction > 0 ? (at + 1) % n : (at + n - 1) % n;
-          travelled += length[direction > 0 ? at : next];
-          if (travelled > w) break;
-          turning += curvature[static_cast<std::size_t>(loop[next])];
-          at = next;
-        }
-      }
-      const Vec3& p = reference.points[static_cast<std::size_t>(loop[i])];
-      const double chord = angle_deg(along_loop(reference, loop, length, i, -1, w) - p,
-                                     along_loop(reference, loop, length, i, 1, w) - p);
-      angle[i] = 180 - turning * 180 / M_PI;
-      candidate[i] = std::abs(chord - 180) > corner_angle_tolerance_deg &&
-                     std::abs(angle[i] - 180) > corner_angle_tolerance_deg;
-    }
-    // the corner is where the boundary turns: of the vertices nearer than the
-    // window along the loop, the one whose own turning is the largest
-    const auto own = [&](std::size_t k) { return std::abs(curvature[static_cast<std::size_t>(loop[k])]); };
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!candidate[i]) continue;
-      bool sharpest = true;
-      for (int direction : {1, -1}) {
-        double travelled = 0;
-        for (std::size_t at = i, steps = 0; sharpest && steps + 1 < n; ++steps) {
-          const std::size_t next = direction > 0 ? (at + 1) % n : (at + n - 1) % n;
-          travelled += length[direction > 0 ? at : next];
-          if (travelled > w) break;
-          if (own(next) > own(i) || (own(next) == own(i) && next < i)) sharpest = false;
-          at = next;
-        }
-      }
-      if (sharpest) corners.push_back({loop[i], angle[i]});
-    }
-  }
-  std::sort(corners.begin(), corners.end(),
-            [](const BoundaryCorner& a, const BoundaryCorner& b) { return a.vertex < b.vertex; });
-  return corners;
-}
 
 CornerQuads corner_quads(const PolygonMesh& mesh, const TriangleSoup& reference) {
   const BoundaryPoints boundary = boundary_points(mesh);
   std::vector<std::size_t> on_boundary;
   for (std::size_t p = 0; p < mesh.points.size(); ++p)
     if (std::isfinite(boundary.shortest_boundary_edge[p])) on_boundary.push_back(p);
-  // the window: half the mesh's mean edge
+  // the window: half the mesh's mean edge (corner_window_quads)
   double edges = 0, total = 0;
   for (const std::vector<int>& face : mesh.faces)
     for (std::size_t k = 0; k < face.size(); ++k, ++edges)
@@ -145,12 +62,12 @@ CornerQuads corner_quads(const PolygonMesh& mesh, const TriangleSoup& reference)
                 mesh.points[static_cast<std::size_t>(face[k])]).norm();
   CornerQuads result;
   if (edges == 0 || !(total > 0)) return result;
-  for (const BoundaryCorner& corner : boundary_corners(reference, 0.5 * total / edges)) {
+  for (const BoundaryCorner& corner : boundary_corners(reference, corner_window_quads * total / edges)) {
     const double angle = corner.angle_deg;
     CornerCount c;
     c.position = reference.points[static_cast<std::size_t>(corner.vertex)];
     c.angle_deg = angle;
-    c.quads_wanted = std::max(1, static_cast<int>(std::lround(angle / 90)));
+    c.quads_wanted = corner_quads_wanted(angle);
     double nearest = std::numeric_limits<double>::infinity();
     int at = -1;
     for (std::size_t p : on_boundary) {

@@ -7,6 +7,7 @@
 // counts as wrong.
 #pragma once
 
+#include "libquadmesh/cones/boundary_corners.h"
 #include "libquadmesh/core/triangle_soup.h"
 #include "libquadmesh/quality/quad_quality.h"
 
@@ -15,11 +16,6 @@
 
 namespace qm {
 
-/// A boundary vertex of the reference is a corner when its interior angle (the sum
-/// of its triangle angles) is more than this far from 180 degrees (the same
-/// threshold as cone_placement's corner cones).
-constexpr double corner_angle_tolerance_deg = 45.0;
-
 /// The ranges the acceptance names, degrees: one quad, three quads.
 constexpr double convex_corner_low_deg = 60.0, convex_corner_high_deg = 120.0;
 constexpr double concave_corner_low_deg = 240.0, concave_corner_high_deg = 300.0;
@@ -27,22 +23,6 @@ constexpr double concave_corner_low_deg = 240.0, concave_corner_high_deg = 300.0
 /// A quad point counts as at a corner when it is within this share of its own
 /// shortest boundary edge from it.
 constexpr double corner_match_share = 0.25;
-
-/// A corner of a boundary loop, seen at a length scale.
-struct BoundaryCorner {
-  int vertex = -1;
-  double angle_deg = 0;  ///< the interior angle: 180 minus the boundary's turning within the window
-};
-
-/// The corners of `reference`'s boundary at the scale `window` (> 0, a length):
-/// boundary vertices where the chords to the boundary points `window` before and
-/// after along the loop meet at more than corner_angle_tolerance_deg from straight,
-/// and the geodesic turning within the window (the sum of pi minus the angle sums)
-/// does too, and that turn more than any other vertex within the window. A CAD
-/// corner (straight or smooth on both sides) is found with its exact angle; the
-/// teeth of a scanned boundary smaller than the window are not corners.
-/// Precondition: `reference` is a manifold triangle surface.
-std::vector<BoundaryCorner> boundary_corners(const TriangleSoup& reference, double window);
 
 struct CornerCount {
   Vec3 position = Vec3::Zero();  ///< the reference's corner vertex

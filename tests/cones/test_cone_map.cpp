@@ -3,7 +3,9 @@
 // cones the map is the scaled square itself; a valence-3/5 pair inside turns the
 // charts by quarter turns across the cut between them.
 #include "libquadmesh/cones/cone_map.h"
+#include "libquadmesh/cones/cone_metric.h"
 #include "libquadmesh/cones/cone_placement.h"
+#include "libquadmesh/cones/wide_corners.h"
 #include "libquadmesh/extract/lattice_quads.h"
 #include "libquadmesh/forms/long_edges.h"
 #include "io/read_surface.h"
@@ -158,6 +160,20 @@ void check_unfolded_quads(const TriangleSoup& soup, const SurfaceAdjacency& adja
   const LatticeQuads q = complete_quads(soup, adjacency, m.map);
   CHECK(euler_and_singular(q) == euler_singular);
   check_cone_quads(q, cones);
+}
+
+/// A rectangle of nx x ny square cells of side `cell`, each cut along a diagonal.
+TriangleSoup rectangle_grid(int nx, int ny, double cell) {
+  TriangleSoup s;
+  for (int i = 0; i <= nx; ++i)
+    for (int j = 0; j <= ny; ++j) s.points.emplace_back(i * cell, j * cell, 0.0);
+  const auto id = [&](int i, int j) { return i * (ny + 1) + j; };
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j) {
+      s.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      s.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return s;
 }
 
 /// A 2 x 1 rectangle with a strip of height `step` on its left half: a 270-degree
@@ -448,9 +464,14 @@ TEST_CASE("a hole little wider than a quad in a shaft a few quads wide: valence-
     return adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)] &&
            std::abs((soup.points[static_cast<std::size_t>(c.vertex)] - Vec3(96, 0, 0)).norm() - 2.5) < 1e-6;
   };
-  const std::vector<Cone> inside = place_cones(soup, adjacency, size);
-  CHECK(std::count_if(inside.begin(), inside.end(), on_hole) == 0);
+  // the interior placement's metric leaves the quads round the hole a fraction of
+  // the size: refused before a map (min_metric_band)
+  CHECK_THROWS_WITH_AS(place_cones(soup, adjacency, size), doctest::Contains("not mapped"), Error);
+  // (where the cones go, not whether the metric's sizes are worth a map)
   ConePlacementOptions options;
+  options.min_metric_band = 0;
+  const std::vector<Cone> inside = place_cones(soup, adjacency, size, options);
+  CHECK(std::count_if(inside.begin(), inside.end(), on_hole) == 0);
   options.boundary_cones = true;
   const std::vector<Cone> cones = place_cones(soup, adjacency, size, options);
   int corners = 0, on_boundary = 0;
@@ -471,9 +492,37 @@ TEST_CASE("a hole little wider than a quad in a shaft a few quads wide: valence-
   check_unfolded_quads(soup, adjacency, cones, size, {-2, 0});
 }
 
-TEST_CASE("a ragged boundary with more corners than cones are allowed is refused before any solve") {
-  // a 3 x 1 strip whose lower edge zigzags: 59 teeth tips and valleys of 242 and 118
-  // degrees, all corners; at the size 0.5 the strip holds 12 quads, so 24 cones are allowed
+TEST_CASE("a ragged boundary: teeth finer than the quads are not corners, and the map makes them straight") {
+  // a 3 x 1 strip of 0.05 x 0.05 cells whose lower edge zigzags: 59 teeth tips and
+  // valleys of 242 and 118 degrees, 0.1 apart
+  TriangleSoup strip = rectangle_grid(60, 20, 0.05);
+  for (int i = 1; i < 60; i += 2) strip.points[static_cast<std::size_t>(vertex_at(strip, 0.05 * i, 0))].y() = 0.03;
+  const SurfaceAdjacency adjacency = surface_adjacency(strip);
+  // at a tooth's size every tooth is a corner; at quads of 0.5 only the strip's four
+  CHECK(corner_cones(strip, 0.05).size() == 63);
+  const std::vector<Cone> corners = corner_cones(strip, 0.5);
+  REQUIRE(corners.size() == 4);
+  std::set<int> at;
+  for (const Cone& c : corners) {
+    CHECK(c.quads == 1);
+    at.insert(c.vertex);
+  }
+  CHECK(at == std::set<int>{vertex_at(strip, 0, 0), vertex_at(strip, 3, 0), vertex_at(strip, 3, 1),
+                            vertex_at(strip, 0, 1)});
+  // the teeth get inner edges to turn on (as the cone route does first); Gauss-Bonnet
+  // leaves nothing to the interior: the corners are the placement, and the map
+  // makes the teeth straight without a fold
+  TriangleSoup split = strip;
+  const WideCornerSplits s = split_turned_boundary(split, corners);
+  const std::vector<Cone> cones = place_cones(split, s.adjacency, 0.5);
+  CHECK(cones.size() == 4);
+  check_unfolded_quads(split, s.adjacency, cones, 0.5, {1, 0});
+}
+
+TEST_CASE("a tooth in one tall triangle: split until the metric can make it straight") {
+  // a 3 x 1 strip whose lower edge zigzags, one triangle from the bottom to the top
+  // each side of a tooth: a tooth's vertex turns by 62 degrees (the corners by 31)
+  // through the one inner edge between its two triangles, of weight about 0
   TriangleSoup strip;
   const int n = 60;
   for (int i = 0; i <= n; ++i) strip.points.push_back(Vec3(0.05 * i, (i % 2 == 1) ? 0.03 : 0, 0));
@@ -484,17 +533,22 @@ TEST_CASE("a ragged boundary with more corners than cones are allowed is refused
     strip.triangles.push_back({b, t + 1, t});
   }
   const SurfaceAdjacency adjacency = surface_adjacency(strip);
-  CHECK(corner_cones(strip, adjacency).size() == 63);  // 59 teeth and 4 right corners
-  try {
-    place_cones(strip, adjacency, 0.5);
-    FAIL("the ragged strip was not refused");
-  } catch (const Error& e) {
-    CHECK(e.code() == ErrorCode::unsupported);
-    CHECK(std::string(e.what()).find("63 boundary vertices are corners") != std::string::npos);
-    CHECK(std::string(e.what()).find("more than the 24 cones allowed") != std::string::npos);
-  }
+  const std::vector<Cone> corners = corner_cones(strip, 0.5);
+  REQUIRE(corners.size() == 4);
+  CHECK_THROWS_WITH_AS(place_cones(strip, adjacency, 0.5), doctest::Contains("cannot turn"), Error);
+  // split: every tooth and corner gets inner edges that turn it, u stays within a
+  // few units (the scale within e^+-5)
+  TriangleSoup split = strip;
+  const WideCornerSplits s = split_turned_boundary(split, corners);
+  CHECK(s.splits >= 59);
+  CHECK(split.points.size() == strip.points.size() + s.splits);
+  const Eigen::VectorXd u = cone_metric(split, s.adjacency, target_curvature(s.adjacency, quads_per_vertex(s.adjacency, corners)),
+                                        vertex_curvature(split, s.adjacency));
+  CHECK(u.maxCoeff() - u.minCoeff() < 10);
+  ConePlacementOptions options;
+  options.min_metric_band = 0;  // the teeth's tall triangles leave 48% of the area in the band
+  CHECK(place_cones(split, s.adjacency, 0.5, options).size() == 4);
 }
-
 
 TEST_CASE("chipped torus (genus 1): the handle forms close the field around the handle, complete quads") {
   // chi = -1, one boundary loop whose four corners turn by 270 degrees: three

@@ -146,11 +146,11 @@ io::OutputMesh output_mesh(const QuadMeshResult& result, const QuadraticQuads* q
 namespace {
 
 /// The boundary vertices of result.surface the cone placement counts as corners
-/// (cone_placement.h corner_cones); none without cones.
+/// at its size (cone_placement.h corner_cones); none without cones.
 std::set<int> corner_vertices(const QuadMeshResult& result) {
   std::set<int> out;
-  if (result.cones.empty()) return out;
-  for (const Cone& c : corner_cones(result.surface, surface_adjacency(result.surface))) out.insert(c.vertex);
+  if (result.cones.empty() || !(result.size > 0)) return out;
+  for (const Cone& c : corner_cones(result.surface, result.size)) out.insert(c.vertex);
   return out;
 }
 

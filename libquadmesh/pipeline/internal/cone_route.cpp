@@ -214,8 +214,9 @@ bool cones_replace(const CandidateQuality& cones, double cones_band, double abel
 
 namespace {
 
-/// Corners of S (cone_placement.h corner_cones) whose quad point is in another
-/// number of quads than the corner asks for, or has no quad point.
+/// Corners of S at the requested size (cone_placement.h corner_cones) whose quad
+/// point is in another number of quads than the corner asks for, or has no quad
+/// point.
 std::size_t corner_mismatches(const QuadMeshResult& r) {
   const TriangleSoup& soup = r.surface;
   const SurfaceAdjacency adjacency = surface_adjacency(soup);
@@ -227,7 +228,7 @@ std::size_t corner_mismatches(const QuadMeshResult& r) {
     if (r.quads.locations[p].kind == SurfaceLocation::Kind::vertex)
       point_of[static_cast<std::size_t>(r.quads.locations[p].a)] = static_cast<int>(p);
   std::size_t mismatches = 0;
-  for (const Cone& c : corner_cones(soup, adjacency)) {
+  for (const Cone& c : corner_cones(soup, r.size_requested)) {
     const int p = point_of[static_cast<std::size_t>(c.vertex)];
     mismatches += p < 0 || quads_at[static_cast<std::size_t>(p)] != c.quads;
   }
@@ -296,11 +297,13 @@ void judge_as_written(ConeCandidate& cones, const QuadMeshOptions& options, doub
 /// one does not (fertility, its handles steered: the first sound placement has 85%
 /// of its quads in the band and two corners wrong). When none is acceptable: the first sound one
 /// (judged, if it was); when none is sound, the last that gave quads, measured;
-/// nothing when every one threw (`failure` then says why the first did).
+/// nothing when every one threw (`failure` then says why the first did). `mapped`,
+/// if given, is set when some placement got as far as its map.
 std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, const QuadMeshOptions& options,
                                                    SurfaceTopology input, Stages& stages, double lattice_factor,
                                                    int& attempts_left, std::string& failure,
-                                                   RoundingOrder rounding = RoundingOrder::cones_first) {
+                                                   RoundingOrder rounding = RoundingOrder::cones_first,
+                                                   bool* mapped = nullptr) {
   std::optional<ConeCandidate> last, first_sound;
   std::vector<std::vector<Cone>> placed;
   const InteriorCones interior = options.cone_placement == ConePlacement::cross_field ? InteriorCones::cross_field
@@ -344,6 +347,7 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
         error = placed_before_error;
       } else if (attempt.cones) {
         placed.push_back(*attempt.cones);
+        if (mapped) *mapped = true;
       }
       if (!error.empty()) {
         if (failure.empty()) failure = error;
@@ -372,16 +376,34 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
   return last;
 }
 
+/// What the cone route needs of `setup` (its soup, preamble, area and diagonal, not
+/// the forms), S's boundary vertices that the corners at the requested size turn by
+/// more than 45 degrees given the inner edges to turn on (wide_corners.h
+/// split_turned_boundary: a scan's teeth; nothing on a CAD part).
+FormSetup turned_boundary_setup(const FormSetup& setup) {
+  FormSetup out;
+  out.soup = setup.soup;
+  out.preamble = setup.preamble;
+  out.area = setup.area;
+  out.diagonal = setup.diagonal;
+  split_turned_boundary(out.soup, corner_cones(out.soup, setup.preamble.size_requested));
+  return out;
+}
+
 /// The cone route's candidate: the placements in turn, until one gives sound quads
 /// (cramped cones fold the map). Throws qm::Error with the first placement's
 /// failure when none gives quads.
-ConeCandidate cone_candidate(const FormSetup& setup, const QuadMeshOptions& options, SurfaceTopology input,
+ConeCandidate cone_candidate(const FormSetup& form_setup, const QuadMeshOptions& options, SurfaceTopology input,
                              Stages& stages) {
+  const FormSetup setup = turned_boundary_setup(form_setup);
   std::string failure;
   int every_placement = static_cast<int>(cone_placements(InteriorCones::greedy, has_handles(input)).size()) + 2;
-  std::optional<ConeCandidate> cones =
-      first_acceptable_placement(setup, options, input, stages, 1.0, every_placement, failure);
-  if (!cones || !sound(cones->candidate.quality, input, options.acceptance)) {
+  bool mapped = false;
+  std::optional<ConeCandidate> cones = first_acceptable_placement(setup, options, input, stages, 1.0, every_placement,
+                                                                  failure, RoundingOrder::cones_first, &mapped);
+  // (when every placement was refused before its map, the rounding order has
+  // nothing to change)
+  if (mapped && (!cones || !sound(cones->candidate.quality, input, options.acceptance))) {
     // the cones and lines rounded first can leave the cut translations, and the
     // boundary segments a cut ends in, far from their fit (seamless_map.h): every
     // placement again with the translations rounded first; the last pass's
@@ -419,14 +441,14 @@ ConeCandidate cone_candidate(const FormSetup& setup, const QuadMeshOptions& opti
 
 }  // namespace
 
-bool cones_first(const TriangleSoup& soup, const QuadMeshOptions& options) {
-  return options.singularities == Singularities::automatic && !corner_cones(soup, surface_adjacency(soup)).empty();
+bool cones_first(const TriangleSoup& soup, double size, const QuadMeshOptions& options) {
+  return options.singularities == Singularities::automatic && !corner_cones(soup, size).empty();
 }
 
 ConesFirst try_cones_first(const FormSetup& setup, const QuadMeshOptions& options, SurfaceTopology input,
                            Stages& stages) {
   ConesFirst out;
-  if (!cones_first(setup.soup, options)) return out;
+  if (!cones_first(setup.soup, setup.preamble.size_requested, options)) return out;
   try {
     ConeCandidate cones = cone_candidate(setup, options, input, stages);
     judge_as_written(cones, options, setup.diagonal, input, stages);

@@ -121,8 +121,8 @@ struct ConeCandidate {
 /// Hausdorff distance of S (the cone route has no size adaptivity yet); records both
 /// shares and, when the Abel result stays, why (for QuadMeshResult::abel_size_band_share
 /// and cone_route_failure, set on the final result). Nothing for abel.
-/// Singularities::automatic on a surface with CAD corners (cone_placement.h
-/// corner_cones): the Abel quads split every right corner in two, so the cone
+/// Singularities::automatic on a surface with corners at the quad size
+/// (cone_placement.h corner_cones): the Abel quads split every right corner in two, so the cone
 /// route runs first; its candidate is `kept` (the Abel route skipped) when it is
 /// sound, has size_band_goal of its quads in the band, every corner right and
 /// lies within the Hausdorff criterion, else it is `tried` (for
@@ -133,7 +133,7 @@ struct ConesFirst {
   std::optional<ConeCandidate> tried;
   std::string failure;
 };
-bool cones_first(const TriangleSoup& soup, const QuadMeshOptions& options);
+bool cones_first(const TriangleSoup& soup, double size, const QuadMeshOptions& options);
 ConesFirst try_cones_first(const FormSetup& setup, const QuadMeshOptions& options, SurfaceTopology input,
                            Stages& stages);
 
