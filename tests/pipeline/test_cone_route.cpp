@@ -106,6 +106,19 @@ void check_acceptance(const QuadQuality& q, int chi, int loops, double band, std
   CHECK(corners_wrong(q) == 0);
 }
 
+/// `input` meshed by mesh_quads at 1.5% of the diagonal keeps its cones and meets
+/// check_acceptance, with no more interior singular vertices than max(24, 1% of
+/// the quads).
+void check_scan_acceptance(const TriangleSoup& input, int chi, int loops, double band, std::size_t corners) {
+  QuadMeshOptions options;
+  options.size_relative = 0.015;
+  const QuadMeshResult r = mesh_quads(input, options);
+  REQUIRE(r.singularities == "cones");
+  const QuadQuality q = quad_quality(polygon_mesh(r.quads), &input, r.size_requested);
+  check_acceptance(q, chi, loops, band, corners);
+  CHECK(static_cast<double>(q.irregular_interior) <= std::max(24.0, 0.01 * static_cast<double>(q.quads)));
+}
+
 }  // namespace
 
 TEST_CASE("a cone candidate is judged after the smoothing that turns its inverted quads back" *
@@ -214,14 +227,7 @@ TEST_CASE("fertility keeps its cones within the acceptance: its handles steered,
           doctest::test_suite("slow")) {
   // issue 18's acceptance on fertility at 1.5% of the diagonal: the first sound
   // placement misses the size band (85%); the route goes on to one that meets it
-  const TriangleSoup input = fertility();
-  QuadMeshOptions options;
-  options.size_relative = 0.015;
-  const QuadMeshResult r = mesh_quads(input, options);
-  REQUIRE(r.singularities == "cones");
-  const QuadQuality q = quad_quality(polygon_mesh(r.quads), &input, r.size_requested);
-  check_acceptance(q, -9, 3, 0.9, 16);
-  CHECK(static_cast<double>(q.irregular_interior) <= std::max(24.0, 0.01 * static_cast<double>(q.quads)));
+  check_scan_acceptance(fertility(), -9, 3, 0.9, 16);
 }
 
 TEST_CASE("cone placements tried side by side give what each gives alone, bit for bit, with their progress") {
@@ -347,11 +353,5 @@ TEST_CASE("a scan with two large blocky holes: corners at the quad scale, the te
   for (std::size_t v = 0; v < input.points.size(); ++v)
     sharp += adjacency.boundary_vertex[v] && std::abs(curvature[v]) > M_PI / 4;
   CHECK(sharp == 44);
-  QuadMeshOptions options;
-  options.size_relative = 0.015;
-  const QuadMeshResult r = mesh_quads(input, options);
-  REQUIRE(r.singularities == "cones");
-  const QuadQuality q = quad_quality(polygon_mesh(r.quads), &input, r.size_requested);
-  check_acceptance(q, -2, 2, 0.95, 45);
-  CHECK(static_cast<double>(q.irregular_interior) <= std::max(24.0, 0.01 * static_cast<double>(q.quads)));
+  check_scan_acceptance(input, -2, 2, 0.95, 45);
 }
