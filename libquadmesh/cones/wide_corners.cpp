@@ -146,18 +146,22 @@ WideCornerSplits split_turned_boundary(TriangleSoup& soup, const std::vector<Con
       turned[v] = adjacency.boundary_vertex[v] &&
                   std::abs(quads[v] * quarter_turn - total[v]) > max_turn_per_weight * std::max(weight[v], 0.0) &&
                   std::abs(quads[v] * quarter_turn - total[v]) > min_turn;
-    std::vector<int> out = wide_corners_at(s, quads, max_turned_corner, [&](std::size_t v) { return turned[v] != 0; });
+    const auto vertex_of = [&](int c) {
+      return static_cast<std::size_t>(s.triangles[static_cast<std::size_t>(c / 3)][static_cast<std::size_t>(c % 3)]);
+    };
+    std::vector<int> out =
+        wide_corners_at(s, quads, max_turned_corner, [&](std::size_t v) { return turned[v] != 0; });
     // and the widest corner of one whose corners are none that wide
     std::vector<char> has(s.points.size(), 0);
-    for (int c : out) has[static_cast<std::size_t>(s.triangles[static_cast<std::size_t>(c / 3)][static_cast<std::size_t>(c % 3)])] = 1;
+    for (int c : out) has[vertex_of(c)] = 1;
     std::vector<int> widest(s.points.size(), -1);
+    std::vector<double> widest_angle(s.points.size(), 0.0);
     for (std::size_t f = 0; f < s.triangles.size(); ++f)
       for (int k = 0; k < 3; ++k) {
-        const auto v = static_cast<std::size_t>(s.triangles[f][static_cast<std::size_t>(k)]);
         const int c = static_cast<int>(3 * f) + k;
-        if (turned[v] && !has[v] &&
-            (widest[v] < 0 || corner_angle(s, f, k) > corner_angle(s, static_cast<std::size_t>(widest[v] / 3), widest[v] % 3)))
-          widest[v] = c;
+        const std::size_t v = vertex_of(c);
+        const double angle = corner_angle(s, f, k);
+        if (turned[v] && !has[v] && angle > widest_angle[v]) widest[v] = c, widest_angle[v] = angle;
       }
     for (int c : widest)
       if (c >= 0) out.push_back(c);

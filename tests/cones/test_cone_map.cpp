@@ -542,7 +542,8 @@ TEST_CASE("a tooth in one tall triangle: split until the metric can make it stra
   const WideCornerSplits s = split_turned_boundary(split, corners);
   CHECK(s.splits >= 59);
   CHECK(split.points.size() == strip.points.size() + s.splits);
-  const Eigen::VectorXd u = cone_metric(split, s.adjacency, target_curvature(s.adjacency, quads_per_vertex(s.adjacency, corners)),
+  const std::vector<int> quads = quads_per_vertex(s.adjacency, corners);
+  const Eigen::VectorXd u = cone_metric(split, s.adjacency, target_curvature(s.adjacency, quads),
                                         vertex_curvature(split, s.adjacency));
   CHECK(u.maxCoeff() - u.minCoeff() < 10);
   ConePlacementOptions options;
