@@ -94,6 +94,7 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
       coarser.density = density;
       return mesh_attempt(setup, options, coarser, stages);
     });
+  keep_nearer_cones(best, cones, options, input, stages);
   QuadMeshResult result = std::move(best.result);
   improve_quads(result, options, stages);
   stages.close();
@@ -157,14 +158,20 @@ QuadMeshResult mesh_quads_maybe_split(TriangleSoup soup, const QuadMeshOptions& 
   }
   if (progress) progress("meshing the input as it is");
   start = std::chrono::steady_clock::now();
-  // where the cone route failed on the finer triangulation it is not tried again
-  // on the coarser one (each try is several seamless maps)
-  const bool cones_failed = fine_ok && !fine.cone_route_failure.empty();
+  // where the cone route failed on the finer triangulation, or gave quads kept only
+  // for being nearer S than the Abel ones, it is not tried again on the coarser one
+  // (each try is several seamless maps)
+  const bool cones_failed =
+      fine_ok && (!fine.cone_route_failure.empty() || std::isfinite(fine.abel_distance_relative));
   QuadMeshOptions as_is_options = options;
   if (cones_failed) as_is_options.singularities = Singularities::abel;
   QuadMeshResult as_is = mesh_quads_on(std::move(soup), as_is_options, progress);
   if (cones_failed) {
-    as_is.cone_route_failure = fine.cone_route_failure;
+    as_is.cone_route_failure =
+        !fine.cone_route_failure.empty()
+            ? fine.cone_route_failure
+            : "the cones' quads were farther from the surface than allowed and no better than the Abel quads of "
+              "the input as it is";
     as_is.abel_size_band_share = as_is.size_band_share;
   }
   const double as_is_seconds = seconds_since(start);

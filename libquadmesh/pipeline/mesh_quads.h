@@ -149,6 +149,10 @@ struct QuadMeshResult {
   double size_band_share = std::numeric_limits<double>::quiet_NaN();       ///< quads within [0.5, 2] x size (quality/size_band.h); NaN: not measured
   double abel_size_band_share = std::numeric_limits<double>::quiet_NaN();  ///< the Abel result's, when automatic measured it; NaN: not measured
   std::string cone_route_failure;      ///< why the cone route was not kept (empty: kept, or not tried)
+  /// The Abel quads' two-sided Hausdorff distance from S / the diagonal, when the
+  /// cones' quads were better but farther than the acceptance allows and the two were
+  /// weighed by distance (NaN otherwise): the cones kept when the Abel quads were farther.
+  double abel_distance_relative = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// The quads the options ask for on this surface: QuadMeshOptions::quads when

@@ -355,3 +355,32 @@ TEST_CASE("a scan with two large blocky holes: corners at the quad scale, the te
   CHECK(sharp == 44);
   check_scan_acceptance(input, -2, 2, 0.95, 45);
 }
+
+TEST_CASE("cones better on every figure but the distance replace Abel quads that are farther still" *
+          doctest::test_suite("slow")) {
+  // kitten with two holes five rings wide: the cones' quads have every corner in
+  // its quad count and 99% in the size band (the Abel quads: about half, every
+  // corner split) but lie 1.3% of the diagonal from the surface, above the 1%
+  // criterion; the Abel quads, refined where they deviate, lie 1.7% away. The Abel result
+  // was kept for the criterion that both miss; the cones' now is, the Abel
+  // quads' distance recorded beside theirs
+  const TriangleSoup input =
+      analyze_topology(cut_holes(io::read_surface(test::shared_mesh("kitten.off")).soup, {1852, 2292}, 5)).soup;
+  QuadMeshOptions options;
+  options.size_relative = 0.015;
+  const QuadMeshResult r = mesh_quads(input, options);
+  REQUIRE(r.singularities == "cones");
+  CHECK(r.cone_route_failure.empty());
+  const QuadQuality q = quad_quality(polygon_mesh(r.quads), &input, r.size_requested);
+  const AcceptanceCriteria acceptance;
+  CHECK(q.hausdorff_rel > acceptance.max_hausdorff_relative);
+  REQUIRE(std::isfinite(r.abel_distance_relative));
+  CHECK(r.abel_distance_relative > 1.2 * q.hausdorff_rel);
+  CHECK(q.euler_characteristic == -2);
+  CHECK(q.boundary_loops == 2);
+  CHECK(q.inverted + q.flipped == 0);
+  CHECK(q.min_scaled_jacobian >= acceptance.min_scaled_jacobian);
+  CHECK(q.size_band_share >= 0.95);
+  CHECK(corners_wrong(q) == 0);
+  CHECK(q.size_band_share > r.abel_size_band_share + 0.3);
+}

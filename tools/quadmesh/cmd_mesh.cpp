@@ -243,16 +243,24 @@ void warn_if_far(const MeshSummary& s, const QuadMeshResult& r, double diagonal)
   const double longest = longest_quad_edge(r.quads, p, distance).length;
   const double ratio = r.size_requested > 0 ? longest / r.size_requested : 0;
   const bool gap = r.extraction.incomplete_cells + r.extraction.degenerate_cells > 0;
+  const bool cones = r.singularities == "cones";
   const std::string cause =
-      gap            ? "the gap above, or quads larger than --size there"
-      : ratio >= 1.5 ? fmt::format("the quads there are up to {:.0f} times --size: the differential is small there (a "
-                                   "protrusion, a long end or a narrow part)",
-                                   ratio)
-                     : "the surface is curved there at the scale of --size";
+      gap ? "the gap above, or quads larger than --size there"
+      : ratio >= 1.5
+          ? fmt::format("the quads there are up to {:.0f} times --size: {}", ratio,
+                        cones ? "the cones leave the quads large there (too few of them for a protrusion or a narrow end)"
+                              : "the differential is small there (a protrusion, a long end or a narrow part)")
+          : "the surface is curved there at the scale of --size";
+  // the cones kept for being nearer than the Abel quads (cone_route.h keep_nearer_cones)
+  const std::string kept = cones && std::isfinite(r.abel_distance_relative)
+                               ? fmt::format(" (the cones' quads are kept: the Abel quads are {:.2g}% of the diagonal "
+                                             "from it)",
+                                             100 * r.abel_distance_relative)
+                               : std::string();
   fmt::print(stderr,
              "quadmesh: warning: the quads are up to {:.3g} ({:.2g}% of the diagonal) from the surface, near ({:.6g}, "
-             "{:.6g}, {:.6g}), against {:.3g} asked (--max-deviation): {}; try another --form or a smaller --size\n",
-             distance, 100 * s.quality.hausdorff_rel, p.x(), p.y(), p.z(), r.max_deviation, cause);
+             "{:.6g}, {:.6g}), against {:.3g} asked (--max-deviation){}: {}; try another --form or a smaller --size\n",
+             distance, 100 * s.quality.hausdorff_rel, p.x(), p.y(), p.z(), r.max_deviation, kept, cause);
 }
 }  // namespace
 

@@ -247,6 +247,7 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
                         {"size_band", {{"low", size_band_low}, {"high", size_band_high}}},
                         {"size_band_share", share(result.size_band_share)},
                         {"abel_size_band_share", share(result.abel_size_band_share)},
+                        {"abel_distance_relative", share(result.abel_distance_relative)},
                         {"cone_route_failure", result.cone_route_failure},
                         {"integer_values", result.cone_map.integer_values},
                         {"max_rounding", result.cone_map.max_rounding},
@@ -331,7 +332,11 @@ void print_summary(const MeshSummary& s) {
   fmt::print("angle deviation     mean {:.2f} deg, p99 {:.2f} deg\n", q.angle_dev_mean, q.angle_dev_p99);
   fmt::print("topology            chi {} (input {}), {} boundary loops (input {})\n", q.euler_characteristic,
              s.input_euler_characteristic, q.boundary_loops, s.input_boundary_loops);
-  fmt::print("Hausdorff distance  {:.3g} of the diagonal\n", q.hausdorff_rel);
+  const Json& abel_distance = s.report["singularities"]["abel_distance_relative"];
+  fmt::print("Hausdorff distance  {:.3g} of the diagonal{}\n", q.hausdorff_rel,
+             abel_distance.is_number() && s.report["singularities"]["route"].get<std::string>() == "cones"
+                 ? fmt::format(" (Abel {:.3g})", abel_distance.get<double>())
+                 : std::string());
   if (corners_total(q) > 0)
     fmt::print("corners             {} convex ({} not in one quad), {} concave ({} not in three), {} other ({} wrong)\n",
                q.corners_convex, q.corners_convex_wrong, q.corners_concave, q.corners_concave_wrong, q.corners_other,

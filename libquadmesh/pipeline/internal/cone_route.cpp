@@ -16,6 +16,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -499,6 +500,7 @@ ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOpt
       outcome.failure = fmt::format("the cones' quads are {:.2g}% of the diagonal from the surface (at most {:.2g}% "
                                     "allowed)",
                                     100 * distance, 100 * options.acceptance.max_hausdorff_relative);
+      outcome.too_far = std::move(tried);
       return outcome;
     }
     best = std::move(cones);
@@ -506,6 +508,34 @@ ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOpt
     outcome.failure = e.what();
   }
   return outcome;
+}
+
+void keep_nearer_cones(Candidate& best, ConeRouteOutcome& outcome, const QuadMeshOptions& options,
+                       SurfaceTopology input, Stages& stages) {
+  if (!outcome.too_far) return;
+  ConeCandidate& cones = *outcome.too_far;
+  double abel_distance = std::numeric_limits<double>::infinity();  // no Abel quads: the cones stand
+  if (best.quality.has_quads) {
+    improve_quads(best.result, options, stages);
+    abel_distance = relative_hausdorff(best.result);
+    best.result.abel_distance_relative = abel_distance;
+  }
+  if (!(cones.distance < abel_distance)) {
+    outcome.failure += fmt::format(", no nearer than the Abel quads ({:.2g}%)", 100 * abel_distance);
+    outcome.too_far.reset();
+    return;
+  }
+  // nor worse shaped (candidate_ranking.h: the Jacobian floor, the angles)
+  if (best.quality.has_quads &&
+      !at_least_as_good(cones.candidate.quality, assess_candidate(best.result), input, options.acceptance)) {
+    outcome.failure += ", and shaped worse than the Abel quads";
+    outcome.too_far.reset();
+    return;
+  }
+  cones.candidate.result.abel_distance_relative = abel_distance;
+  best = std::move(cones.candidate);
+  outcome.failure.clear();
+  outcome.too_far.reset();
 }
 
 }  // namespace qm

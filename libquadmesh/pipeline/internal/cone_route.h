@@ -140,9 +140,22 @@ ConesFirst try_cones_first(const FormSetup& setup, const QuadMeshOptions& option
 struct ConeRouteOutcome {
   double abel_size_band_share = std::numeric_limits<double>::quiet_NaN();  ///< NaN: not measured
   std::string failure;  ///< why the cone route was tried and not kept (empty otherwise)
+  /// Cones that replace the Abel quads but for their distance from S: weighed by
+  /// keep_nearer_cones against the Abel quads as they will be written.
+  std::optional<ConeCandidate> too_far;
 };
 /// `first`: what try_cones_first found (its candidate is reused, not recomputed).
 ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOptions& options, SurfaceTopology input,
                                        Stages& stages, Candidate& best, ConesFirst first = {});
+
+/// When the cones' quads were better than the Abel ones but for their distance from
+/// S (outcome.too_far), they replace `best` (the Abel result, refined where it
+/// deviates, improved as it will be written) if the Abel quads lie farther still
+/// from S and are shaped no better (candidate_ranking.h at_least_as_good): the cones
+/// then win on every figure and miss the distance criterion, which the warning
+/// about the distance says. Sets QuadMeshResult::abel_distance_relative whenever
+/// it measures the Abel quads.
+void keep_nearer_cones(Candidate& best, ConeRouteOutcome& outcome, const QuadMeshOptions& options,
+                       SurfaceTopology input, Stages& stages);
 
 }  // namespace qm
