@@ -6,6 +6,7 @@
 #include "libquadmesh/cones/cone_map.h"
 #include "libquadmesh/cones/cone_metric.h"
 #include "libquadmesh/cones/cross_field.h"
+#include "libquadmesh/cones/protrusion_caps.h"
 #include "libquadmesh/cones/smooth_cross_field.h"
 #include "libquadmesh/core/error.h"
 
@@ -134,10 +135,11 @@ class ConeCrowding {
 /// Moves interior cones, one at a time, to where the field meets every boundary
 /// loop (and goes round every handle) closest to a whole quarter turn
 /// (cross_field.h LoopTurns: every row), within
-/// `rings` edges of where they are. Returns the largest turn left (radians).
+/// `rings` edges of where they are; the cones at `pinned` vertices stay. Returns
+/// the largest turn left (radians).
 double align_loops_by_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const LoopTurns& model,
-                            const std::vector<double>& curvature, const std::vector<char>& eligible, int rings,
-                            int separation, std::vector<Cone>& cones) {
+                            const std::vector<double>& curvature, const std::vector<char>& eligible,
+                            const std::vector<char>& pinned, int rings, int separation, std::vector<Cone>& cones) {
   const std::size_t loops = model.rows();
   std::vector<double> kappa = target_curvature(adjacency, quads_per_vertex(adjacency, cones));
   Eigen::VectorXd rhs(static_cast<Eigen::Index>(kappa.size()));
@@ -160,7 +162,8 @@ double align_loops_by_cones(const TriangleSoup& soup, const SurfaceAdjacency& ad
     for (int pass = 0; pass < max_alignment_passes && current > alignment_goal; ++pass) {
       bool moved = false;
       for (Cone& cone : cones) {
-        if (adjacency.boundary_vertex[static_cast<std::size_t>(cone.vertex)]) continue;
+        const auto at = static_cast<std::size_t>(cone.vertex);
+        if (adjacency.boundary_vertex[at] || pinned[at]) continue;
         const double k = (4 - cone.quads) * quarter_turn;
         int best = -1;
         std::vector<double> best_dot;
@@ -215,11 +218,12 @@ double size_spread(const Eigen::VectorXd& u, const std::vector<double>& area, do
 /// dV = 2 k (g_b - g_a) with g = L^-1 (A (u - mean u)) (L symmetric): one solve
 /// ranks every move. A move is kept when the re-solved V drops and the loops'
 /// turns (LoopTurns) stay within `slack` of whole quarter turns or no worse than
-/// they were.
+/// they were. The cones at `pinned` vertices stay.
 void relax_cones_for_size(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const ConeMetricSolver& solver,
                           const LoopTurns& model, const std::vector<double>& curvature,
-                          const std::vector<double>& area, const std::vector<char>& eligible, int separation,
-                          int passes, double slack, std::vector<Cone>& cones) {
+                          const std::vector<double>& area, const std::vector<char>& eligible,
+                          const std::vector<char>& pinned, int separation, int passes, double slack,
+                          std::vector<Cone>& cones) {
   auto alignment_cost = [&](const std::vector<Cone>& trial) {
     if (adjacency.boundary_loops.size() < 2) return 0.0;
     const std::vector<double> kappa = target_curvature(adjacency, quads_per_vertex(adjacency, trial));
@@ -248,7 +252,7 @@ void relax_cones_for_size(const TriangleSoup& soup, const SurfaceAdjacency& adja
     bool moved = false;
     for (std::size_t i = 0; i < cones.size(); ++i) {
       const int a = cones[i].vertex;
-      if (adjacency.boundary_vertex[static_cast<std::size_t>(a)]) continue;
+      if (adjacency.boundary_vertex[static_cast<std::size_t>(a)] || pinned[static_cast<std::size_t>(a)]) continue;
       const double k = (4 - cones[i].quads) * quarter_turn;
       // the neighbours by the first-order drop, largest first (the first of equal
       // ones), the first not crowded by another cone taken
@@ -290,6 +294,7 @@ void relax_cones_for_size(const TriangleSoup& soup, const SurfaceAdjacency& adja
 struct MetricBand {
   double share = 0;
   double largest = 0;
+  double mean = 0;  ///< the area-weighted mean of u (the size h)
 };
 
 MetricBand metric_band(const Eigen::VectorXd& u, const std::vector<double>& area, const std::vector<char>& cone) {
@@ -301,6 +306,7 @@ MetricBand metric_band(const Eigen::VectorXd& u, const std::vector<double>& area
     }
   const double mean = sum / total;
   MetricBand band;
+  band.mean = mean;
   for (Eigen::Index v = 0; v < u.size(); ++v) {
     if (cone[static_cast<std::size_t>(v)]) continue;
     if (std::abs(u[v] - mean) <= std::log(2.0)) band.share += area[static_cast<std::size_t>(v)] / total;
@@ -372,7 +378,11 @@ std::array<int, 4> quarter_points(const TriangleSoup& soup, const std::vector<in
 /// the lowest u among the vertices that may take a cone, while the metric's quad
 /// size leaves the band: less than options.pair_band_goal of the area within
 /// [0.5, 2] h, or somewhere above options.pair_largest x h (method.md section 11:
-/// protrusion tips and the ends of arms get the valence-3 cones). Each pair is
+/// protrusion tips and the ends of arms get the valence-3 cones). Where the quads
+/// are above pair_largest x h in a region off the boundary that lacks two quarter
+/// turns or more (protrusion_caps.h: an ear, a stub), that many pairs at once, each
+/// valence-3 cone at the lowest u in the region as the earlier ones leave it, and
+/// those cones pinned: `settle(set, pinned)` moves the others. Each step is
 /// weighed after `settle` has moved the cones (loops aligned, sizes evened), and
 /// kept only when the band improves; at most `room` cones are added.
 template <class Settle>
@@ -394,9 +404,35 @@ void add_cone_pairs(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
         mark_within(soup.points, soup.points[static_cast<std::size_t>(c.vertex)], spacing, 0, free);
     return free;
   };
+  // up to `count` pairs into `set` (whose metric is `set_u`), the valence-3 cones in
+  // `region` at its lowest u (each pair's metric solved before the next), pinned;
+  // returns the cones added
+  auto add_cap = [&](const std::vector<int>& region, int count, Eigen::VectorXd set_u, std::vector<Cone>& set,
+                     std::vector<char>& pin) {
+    int added = 0;
+    for (int k = 0; k < count; ++k) {
+      const std::vector<char> open = free_vertices(set);
+      int tip = -1, top = -1;
+      for (int v : region)
+        if (open[static_cast<std::size_t>(v)] && (tip < 0 || set_u[v] < set_u[tip])) tip = v;
+      for (std::size_t v = 0; v < open.size(); ++v)
+        if (open[v] && (top < 0 || set_u[static_cast<Eigen::Index>(v)] > set_u[top])) top = static_cast<int>(v);
+      if (tip < 0 || top < 0 ||
+          (soup.points[static_cast<std::size_t>(top)] - soup.points[static_cast<std::size_t>(tip)]).squaredNorm() <
+              spacing * spacing)
+        break;
+      set.push_back({top, 5});
+      set.push_back({tip, 3});
+      pin[static_cast<std::size_t>(tip)] = 1;
+      added += 2;
+      measure(set, set_u);
+    }
+    return added;
+  };
   Eigen::VectorXd u;
   MetricBand band = measure(cones, u);
-  for (; room >= 2; room -= 2) {
+  std::vector<char> pinned(area.size(), 0);
+  while (room >= 2) {
     if (band.share >= options.pair_band_goal && band.largest <= options.pair_largest) return;
     const std::vector<char> free = free_vertices(cones);
     int high = -1, low = -1;
@@ -419,15 +455,28 @@ void add_cone_pairs(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
     const Vec3 between = soup.points[static_cast<std::size_t>(five)] - soup.points[static_cast<std::size_t>(low)];
     if (between.squaredNorm() < spacing * spacing) return;
     std::vector<Cone> trial = cones;
-    trial.push_back(edge >= 0 ? Cone{edge, 3} : Cone{high, 5});
-    trial.push_back({low, 3});
-    settle(trial);
+    std::vector<char> trial_pinned = pinned;
+    // a protrusion: the quarter turns its cap lacks, all at once
+    int added = 0;
+    if (options.protrusion_caps && band.largest > options.pair_largest) {
+      const double level = band.mean - std::log(options.pair_largest);  // quads above pair_largest x h
+      const int cap = std::min(room / 2, cap_quarter_turns(soup, adjacency, curvature, u, level, low, cones));
+      if (cap >= 2) added = add_cap(sublevel_region(soup, adjacency, u, low, level), cap, u, trial, trial_pinned);
+    }
+    if (added == 0) {
+      trial.push_back(edge >= 0 ? Cone{edge, 3} : Cone{high, 5});
+      trial.push_back({low, 3});
+      added = 2;
+    }
+    settle(trial, trial_pinned);
     Eigen::VectorXd trial_u;
     const MetricBand trial_band = measure(trial, trial_u);
     if (trial_band.share <= band.share && trial_band.largest >= band.largest) return;
     cones = std::move(trial);
+    pinned = std::move(trial_pinned);
     u = std::move(trial_u);
     band = trial_band;
+    room -= added;
   }
 }
 
@@ -611,33 +660,36 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
     mark_within(soup.points, soup.points[static_cast<std::size_t>(best)], spacing, 1, taken);
     deficit -= step;
   }
-  // the cones moved to align the loops, then to even the quad sizes
-  const auto settle = [&](std::vector<Cone>& set) {
+  // the cones moved to align the loops, then to even the quad sizes; those at
+  // `pinned` vertices (a protrusion's cap) stay
+  const auto settle = [&](std::vector<Cone>& set, const std::vector<char>& pinned) {
     if (set.size() == corner_count) return;
     if (steered)
-      align_loops_by_cones(soup, adjacency, model, curvature, eligible, options.alignment_rings,
+      align_loops_by_cones(soup, adjacency, model, curvature, eligible, pinned, options.alignment_rings,
                            options.cone_separation, set);
     if (greedy && options.size_relaxation_passes > 0) {
-      relax_cones_for_size(soup, adjacency, solver, model, curvature, area, eligible, options.cone_separation,
-                           options.size_relaxation_passes, options.relaxation_alignment_slack, set);
+      relax_cones_for_size(soup, adjacency, solver, model, curvature, area, eligible, pinned,
+                           options.cone_separation, options.size_relaxation_passes,
+                           options.relaxation_alignment_slack, set);
       if (steered)
-        align_loops_by_cones(soup, adjacency, model, curvature, eligible, options.alignment_rings,
+        align_loops_by_cones(soup, adjacency, model, curvature, eligible, pinned, options.alignment_rings,
                              options.cone_separation, set);
     }
   };
-  settle(cones);
+  settle(cones, std::vector<char>(soup.points.size(), 0));
   if (greedy && options.pair_band_goal > 0) {
     const int interior = static_cast<int>(cones.size() - corner_count);
     add_cone_pairs(soup, adjacency, solver, curvature, area, eligible, spacing, boundary_room(), size, settle, options,
                    static_cast<int>(allowed) - interior, cones);
   }
-  if (options.min_metric_band > 0) {
+  if (options.min_metric_band > 0 || options.max_metric_largest > 0) {
     std::vector<char> placed(area.size(), 0);
     for (const Cone& c : cones) placed[static_cast<std::size_t>(c.vertex)] = 1;
     const MetricBand band =
         metric_band(solver.solve(target_curvature(adjacency, quads_per_vertex(adjacency, cones)), curvature), area,
                     placed);
-    if (band.share < options.min_metric_band)
+    if (band.share < options.min_metric_band ||
+        (options.max_metric_largest > 0 && band.largest > options.max_metric_largest))
       throw Error(ErrorCode::unsupported,
                   fmt::format("the {} cones leave {:.0f}% of the area with quads within [0.5, 2] x the size (up to "
                               "{:.0f} x): not mapped",

@@ -93,6 +93,13 @@ struct ConePlacementOptions {
   double pair_band_goal = 0.95;
   /// ...or a quad size somewhere above this many times the size.
   double pair_largest = 3.0;
+  /// Where the quads are above pair_largest x the size in a region away from the
+  /// boundary that lacks two quarter turns or more (protrusion_caps.h: an ear, a
+  /// stub), the pairs go in that many at once, each valence-3 cone at the lowest u
+  /// in the region (and a valence-5 one at the highest u), and stay there while the
+  /// other cones settle: one pair at a time, the settling moved each cap cone out
+  /// again (pig's ears, bunny-open's).
+  bool protrusion_caps = false;
   /// A placement whose metric leaves less than this share of the area with its
   /// quad size within [0.5, 2] x the size is refused (qm::Error, unsupported)
   /// rather than mapped: its quads cannot come near the band, and on a large scan
@@ -100,6 +107,8 @@ struct ConePlacementOptions {
   /// the size). The placements kept on the shared meshes and examples have 85-100%,
   /// pig's tried ones 57-93%. 0: every placement is mapped.
   double min_metric_band = 0.55;
+  /// ...or that leaves quads somewhere above this many times the size (0: no bound).
+  double max_metric_largest = 0;
   /// Then the interior cones move, a ring at a time, while the quad sizes spread
   /// less (the area-weighted variance of the log scale u), for at most this many
   /// sweeps (0: they stay)...

@@ -58,6 +58,19 @@ ConePlacementOptions boundary_cone_placement() {
   return on_boundary;
 }
 
+std::vector<ConePlacementOptions> capped_placements() {
+  const std::vector<ConePlacementOptions> plain = cone_placements();
+  std::vector<ConePlacementOptions> out;
+  for (std::size_t i : {0, 2, 3}) {  // the first, wider and widest ones
+    ConePlacementOptions capped = plain[i];
+    capped.protrusion_caps = true;
+    capped.min_metric_band = capped_min_metric_band;
+    capped.max_metric_largest = capped_max_metric_largest;
+    out.push_back(capped);
+  }
+  return out;
+}
+
 std::vector<ConePlacementOptions> fallback_placements(bool some_sound) {
   if (some_sound) return {nearer_placement()};
   ConePlacementOptions narrow;
@@ -288,7 +301,8 @@ void judge_as_written(ConeCandidate& cones, const QuadMeshOptions& options, doub
 }
 
 /// The first placement of cone_placements() (then fallback_placements(), when none
-/// gave sound quads with size_band_goal of them in the size band) whose quads at
+/// gave sound quads with size_band_goal of them in the size band, then, greedy,
+/// capped_placements()) whose quads at
 /// `lattice_factor` are
 /// acceptable: sound, size_band_goal of them in the size band and none above
 /// max_size_ratio x the size, every corner in its
@@ -319,12 +333,20 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
   // whether some placement's quads were sound, and whether one of those had
   // size_band_goal of them in the size band
   bool some_sound = false, sound_share_in_band = false;
-  bool fallbacks_added = false;
+  bool fallbacks_added = false, capped_added = false;
   for (std::size_t start = 0; attempts_left > 0 && !found; start += width) {
     if (start >= placements.size()) {
-      if (fallbacks_added || interior != InteriorCones::greedy || sound_share_in_band) break;
-      fallbacks_added = true;
-      for (ConePlacementOptions& p : fallback_placements(some_sound)) {
+      if (interior != InteriorCones::greedy || capped_added) break;
+      std::vector<ConePlacementOptions> more;
+      if (!fallbacks_added && !sound_share_in_band) {
+        fallbacks_added = true;
+        more = fallback_placements(some_sound);
+      } else {
+        // the protrusions' caps last: their cones move what the others settle
+        capped_added = true;
+        more = capped_placements();
+      }
+      for (ConePlacementOptions& p : more) {
         p.rounding = rounding;
         placements.push_back(p);
       }
@@ -398,7 +420,9 @@ ConeCandidate cone_candidate(const FormSetup& form_setup, const QuadMeshOptions&
                              Stages& stages) {
   const FormSetup setup = turned_boundary_setup(form_setup);
   std::string failure;
-  int every_placement = static_cast<int>(cone_placements(InteriorCones::greedy, has_handles(input)).size()) + 2;
+  // every placement, the fallbacks and the capped ones
+  int every_placement =
+      static_cast<int>(cone_placements(InteriorCones::greedy, has_handles(input)).size() + 2 + capped_placements().size());
   bool mapped = false;
   std::optional<ConeCandidate> cones = first_acceptable_placement(setup, options, input, stages, 1.0, every_placement,
                                                                   failure, RoundingOrder::cones_first, &mapped);
@@ -411,6 +435,7 @@ ConeCandidate cone_candidate(const FormSetup& form_setup, const QuadMeshOptions&
     // candidate stands when this one finds nothing sound either
     stages.announce("no placement gave sound quads: the placements again, the seamless maps rounding the cut "
                     "translations first");
+    // (not the capped ones: every placement's map costs seconds on a large scan)
     int second_pass = static_cast<int>(cone_placements(InteriorCones::greedy, has_handles(input)).size()) + 2;
     std::string ignored;
     std::optional<ConeCandidate> again = first_acceptable_placement(setup, options, input, stages, 1.0, second_pass,

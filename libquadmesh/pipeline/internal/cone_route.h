@@ -47,6 +47,16 @@ struct ConeAttempt {
   std::vector<std::pair<std::string, double>> timings;  ///< its stages (Stages)
 };
 
+/// The capped placements (cone_placements) are mapped only when their metric
+/// leaves at least this share of the area with quads within [0.5, 2] x the size
+/// (the lowest of the placements kept on the shared meshes and examples: 85%)...
+constexpr double capped_min_metric_band = 0.85;
+/// ...and no quads above this many times the size: where the caps leave the quads
+/// that large (bunny-open, its ears capped: 71-140 x near the base's ragged holes,
+/// with 65-92% of the area in the band) the map folds (141 triangles), at seven
+/// times the Abel run's cost. Pig's kept placement: 2.9 x.
+constexpr double capped_max_metric_largest = 10.0;
+
 /// How many placements the route tries at a time when the threads allow.
 constexpr std::size_t placements_side_by_side = 2;
 
@@ -67,6 +77,15 @@ std::vector<ConeAttempt> cone_attempts_side_by_side(const FormSetup& setup,
 /// on a genus-1 scan with one hole every steered placement folds.
 std::vector<ConePlacementOptions> cone_placements(InteriorCones interior = InteriorCones::greedy,
                                                   bool handles = false);
+
+/// Tried after cone_placements() and fallback_placements() (greedy) when none was
+/// acceptable: the first, wider and widest ones with protrusion_caps (a
+/// protrusion's cap cones placed together and kept there: pig's ears), refused
+/// before their maps when their metric leaves the sizes off
+/// (capped_min_metric_band, capped_max_metric_largest). Last, as their cones move
+/// what the others settle: on a scan they were first for, two cuts lost their
+/// band.
+std::vector<ConePlacementOptions> capped_placements();
 
 /// A placement tried after cone_placements() (greedy; fallback_placements) when
 /// some gave sound quads but none of those had size_band_goal of them in the size band: interior cones
