@@ -4,6 +4,7 @@
 #include "libquadmesh/core/internal/union_find.h"
 #include "libquadmesh/quality/corner_quads.h"
 #include "libquadmesh/quality/hausdorff.h"
+#include "libquadmesh/quality/quad_distance.h"
 #include "libquadmesh/quality/size_band.h"
 
 #include <Eigen/Geometry>
@@ -448,52 +449,17 @@ void measure_edges(const PolygonMesh& mesh, const Connectivity& c, QuadQuality& 
   q.boundary_alignment_max = max_of(alignment);
 }
 
-/// The reference's samples for the distance to the quads: surface_samples(), or its
-/// points alone where its mean edge is at most a quarter of the quads' (a scan far
-/// finer than the quads: its points are then as dense as the quads' own samples,
-/// every point of it within half a sample spacing of one, and the distance is
-/// 1-Lipschitz; a million-triangle input had 10 million samples otherwise).
-std::vector<Vec3> reference_samples(const TriangleSoup& reference, const std::vector<Vec3>& quad_points,
-                                    const std::vector<Triangle>& quad_triangles) {
-  if (mean_edge_length(reference) > 0.25 * mean_edge_length(TriangleSoup{quad_points, quad_triangles, {}, {}, {}}))
-    return surface_samples(reference.points, reference.triangles);
-  std::vector<char> used(reference.points.size(), 0);
-  for (const Triangle& t : reference.triangles)
-    for (int v : t) used[static_cast<std::size_t>(v)] = 1;
-  std::vector<Vec3> samples;
-  for (std::size_t i = 0; i < used.size(); ++i)
-    if (used[i]) samples.push_back(reference.points[i]);
-  return samples;
-}
-
 /// Two-sided Hausdorff distance to the reference (NaN without one).
 void measure_hausdorff(const PolygonMesh& mesh, const TriangleSoup* reference, QuadQuality& q) {
   q.hausdorff_rel = q.hausdorff_forward_rel = q.hausdorff_backward_rel = kNaN;
   if (reference == nullptr) return;
-  std::vector<Triangle> split;  // fans from corner 0: quads along the diagonal 0-2
-  for (const std::vector<int>& face : mesh.faces)
-    for (std::size_t i = 1; i + 1 < face.size(); ++i)
-      split.push_back({face[0], face[i], face[i + 1]});
-  std::vector<Vec3> samples = surface_samples(mesh.points, split);
-  for (const std::vector<int>& face : mesh.faces) {
-    if (face.size() == 3) continue;  // the triangle's centroid is already a sample
-    Vec3 centroid = Vec3::Zero();
-    for (int v : face)
-      centroid += mesh.points[static_cast<std::size_t>(v)];
-    samples.push_back(centroid / static_cast<double>(face.size()));
-  }
-  const FarthestSample forward = farthest_sample(samples, reference->points, reference->triangles);
-  const FarthestSample backward =
-      farthest_sample(reference_samples(*reference, mesh.points, split), mesh.points, split);
-  HausdorffDistance h;
-  h.forward = forward.distance;
-  h.backward = backward.distance;
-  q.hausdorff_at = h.forward >= h.backward ? forward.point : backward.point;
+  const QuadDistance d = quad_distance(mesh, *reference);
+  q.hausdorff_at = d.farthest;
   const double diagonal = bounding_box_diagonal(reference->points, reference->triangles);
   if (diagonal > 0) {
-    q.hausdorff_forward_rel = h.forward / diagonal;
-    q.hausdorff_backward_rel = h.backward / diagonal;
-    q.hausdorff_rel = h.value() / diagonal;
+    q.hausdorff_forward_rel = d.distance.forward / diagonal;
+    q.hausdorff_backward_rel = d.distance.backward / diagonal;
+    q.hausdorff_rel = d.distance.value() / diagonal;
   }
 }
 

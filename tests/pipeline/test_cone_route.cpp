@@ -6,6 +6,7 @@
 #include "libquadmesh/cones/cross_field.h"
 #include "libquadmesh/forms/long_edges.h"
 #include "libquadmesh/pipeline/mesh_quads.h"
+#include "libquadmesh/quality/hausdorff.h"
 #include "libquadmesh/quality/quad_quality.h"
 #include "libquadmesh/pipeline/internal/candidate_ranking.h"
 #include "libquadmesh/pipeline/internal/cone_route.h"
@@ -383,6 +384,10 @@ TEST_CASE("cones better on every figure but the distance replace Abel quads that
   CHECK(q.size_band_share >= 0.95);
   CHECK(corners_wrong(q) == 0);
   CHECK(q.size_band_share > r.abel_size_band_share + 0.3);
+  // the distance the route judged the cones by is the one the report reads
+  // (quality/quad_distance.h; S's triangulation there has its turned corners split)
+  const double diagonal = bounding_box_diagonal(input.points, input.triangles);
+  CHECK(r.judged_deviation / diagonal == doctest::Approx(q.hausdorff_rel).epsilon(0.01));
 }
 
 TEST_CASE("pig: its ears' caps get their cones together, and its quads meet every criterion" *

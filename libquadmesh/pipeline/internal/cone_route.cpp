@@ -10,6 +10,7 @@
 #include "libquadmesh/pipeline/internal/deviation_budget.h"
 #include "libquadmesh/pipeline/internal/quad_improvement.h"
 #include "libquadmesh/quality/hausdorff.h"
+#include "libquadmesh/quality/quad_distance.h"
 #include "libquadmesh/quality/size_band.h"
 
 #include <fmt/format.h>
@@ -249,16 +250,11 @@ std::size_t corner_mismatches(const QuadMeshResult& r) {
   return mismatches;
 }
 
-/// Two-sided Hausdorff distance of the quads (split along 0-2) from S, relative to
-/// S's bounding-box diagonal.
+/// Two-sided Hausdorff distance of the quads from S, relative to S's
+/// bounding-box diagonal, as the quality report measures it (quality/quad_distance.h).
 double relative_hausdorff(const QuadMeshResult& r) {
-  std::vector<Triangle> halves;
-  for (const auto& q : r.quads.quads) {
-    halves.push_back({q[0], q[1], q[2]});
-    halves.push_back({q[0], q[2], q[3]});
-  }
   const double diagonal = bounding_box_diagonal(r.surface.points, r.surface.triangles);
-  return two_sided_hausdorff(r.quads.points, halves, r.surface.points, r.surface.triangles).value() / diagonal;
+  return quad_distance(polygon_mesh(r.quads), r.surface).distance.value() / diagonal;
 }
 
 SizeBand size_band(const QuadMeshResult& r) {
