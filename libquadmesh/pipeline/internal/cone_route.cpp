@@ -60,10 +60,9 @@ ConePlacementOptions boundary_cone_placement() {
 }
 
 std::vector<ConePlacementOptions> capped_placements() {
-  const std::vector<ConePlacementOptions> plain = cone_placements();
   std::vector<ConePlacementOptions> out;
-  for (std::size_t i : {0, 2, 3}) {  // the first, wider and widest ones
-    ConePlacementOptions capped = plain[i];
+  for (ConePlacementOptions capped : cone_placements()) {
+    if (!(capped.pair_band_goal > 0)) continue;  // the caps are a step of the pairs
     capped.protrusion_caps = true;
     capped.min_metric_band = capped_min_metric_band;
     capped.max_metric_largest = capped_max_metric_largest;
@@ -431,7 +430,8 @@ ConeCandidate cone_candidate(const FormSetup& form_setup, const QuadMeshOptions&
     // candidate stands when this one finds nothing sound either
     stages.announce("no placement gave sound quads: the placements again, the seamless maps rounding the cut "
                     "translations first");
-    // (not the capped ones: every placement's map costs seconds on a large scan)
+    // (the capped ones only as far as the attempts left after the fallbacks
+    // reach: every placement's map costs seconds on a large scan)
     int second_pass = static_cast<int>(cone_placements(InteriorCones::greedy, has_handles(input)).size()) + 2;
     std::string ignored;
     std::optional<ConeCandidate> again = first_acceptable_placement(setup, options, input, stages, 1.0, second_pass,

@@ -79,7 +79,8 @@ std::vector<ConePlacementOptions> cone_placements(InteriorCones interior = Inter
                                                   bool handles = false);
 
 /// Tried after cone_placements() and fallback_placements() (greedy) when none was
-/// acceptable: the first, wider and widest ones with protrusion_caps (a
+/// acceptable: those of cone_placements() (without handles) that add pairs, the
+/// first, wider and widest ones, with protrusion_caps (a
 /// protrusion's cap cones placed together and kept there: pig's ears), refused
 /// before their maps when their metric leaves the sizes off
 /// (capped_min_metric_band, capped_max_metric_largest). Last, as their cones move
