@@ -192,6 +192,24 @@ TEST_CASE("work limit: a size or count that implies too many quads is refused in
   CHECK(help.out.find("5000000") != std::string::npos);
 }
 
+TEST_CASE("a --size larger than half the model is refused at once, naming the diagonal and the % form") {
+  const std::string dir = test::scratch_dir("hostile_large_size");
+  const std::string out = quoted(dir + "/out.msh");
+  // kitten-2holes' diagonal is 122.6; on bunny-open (diagonal 0.25) --size 1.5
+  // meant as 1.5% ran every route on a lattice of a cell or two for minutes and failed
+  const Run length = quadmesh("mesh " + quoted(test::shared_mesh("kitten-2holes.obj")) + " -o " + out + " --size 100");
+  expect_one_error(length, 2, "--size 100 is 0.815 times the model's bounding-box diagonal (122.6");
+  const std::string line = length.error_lines()[0];
+  CHECK(line.find("give a length below 61.3") != std::string::npos);
+  CHECK(line.find("such as --size 1.5%") != std::string::npos);
+  expect_one_error(quadmesh("mesh " + quoted(test::shared_mesh("kitten-2holes.obj")) + " -o " + out + " --size 60%"),
+                   2, "--size 60% is 0.6 times the model's bounding-box diagonal");
+  // CAD input is refused before Gmsh triangulates it at that size
+  expect_one_error(quadmesh("mesh " + quoted(test::example("plate-two-holes.geo")) + " -o " + out + " --size 1000"),
+                   2, "--size 1000 is ");
+  CHECK_FALSE(fs::exists(dir + "/out.msh"));
+}
+
 TEST_CASE("messages: --form counts from 1, unknown commands are named, quality refuses what info refuses") {
   const std::string dir = test::scratch_dir("hostile_messages");
   const Run form = quadmesh("mesh " + quoted(test::shared_mesh("kitten-2holes.obj")) + " -o " +

@@ -52,16 +52,29 @@ void check_mesh_files(const MeshOptions& options) {
                                  options.quads, options.max_quads));
 }
 
+/// The largest --size taken, as a share of the model's bounding-box diagonal: a
+/// surface with holes needs quads well below half its extent.
+constexpr double max_size_share_of_diagonal = 0.5;
+
 void check_quad_estimate(const MeshOptions& options, const TriangleSoup& soup) {
   if (options.quads > 0) return;  // checked with the files
   QuadMeshOptions asked_for;
   asked_for.size = options.size;
   asked_for.size_relative = options.size_relative;
-  const double estimate = implied_quad_count(soup, asked_for);
-  if (!(estimate > static_cast<double>(options.max_quads))) return;
   const std::string asked = options.size > 0            ? fmt::format("--size {:g}", options.size)
                             : options.size_relative > 0 ? fmt::format("--size {:g}%", 100 * options.size_relative)
                                                         : std::string("the default size (1/60 of the diagonal)");
+  // a length in other units than the model's (--size 1.5 meant as 1.5%, or mm
+  // for a model in metres) would have the whole pipeline run for minutes on a
+  // lattice of a cell or two and fail
+  const double diagonal = bounding_box_diagonal(soup.points, soup.triangles);
+  const double size = options.size > 0 ? options.size : options.size_relative * diagonal;
+  if (diagonal > 0 && size > max_size_share_of_diagonal * diagonal)
+    throw UsageError(fmt::format("{} is {:.3g} times the model's bounding-box diagonal ({:g}): give a length "
+                                 "below {:g}, or a share of the diagonal such as --size 1.5%",
+                                 asked, size / diagonal, diagonal, max_size_share_of_diagonal * diagonal));
+  const double estimate = implied_quad_count(soup, asked_for);
+  if (!(estimate > static_cast<double>(options.max_quads))) return;
   throw UsageError(fmt::format("{} implies about {:.3g} quads (surface area / size^2), more than --max-quads {}; "
                                "give a larger --size, or raise --max-quads to mesh it",
                                asked, std::min(estimate, 1e300), options.max_quads));
