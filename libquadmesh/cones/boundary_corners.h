@@ -24,6 +24,15 @@ constexpr double corner_angle_tolerance_deg = 45.0;
 /// apart are both seen, and a tooth smaller than half a quad is not.
 constexpr double corner_window_quads = 0.5;
 
+/// A staircase is four or more corners in a row along a loop (two steps or more),
+/// each turning the other way from the one before and less than this many quads
+/// from it (a scan's voxel steps): a lattice can give such a step no height but 0
+/// or a whole quad, twice the step, and the map folds between the two. Its corners
+/// are not corners; an odd count keeps its net quarter turn at its sharpest corner
+/// that turns that way. A low step alone, or a step and a half (a shoulder, a
+/// notch, a coarse hole polygon's jog), keeps its corners.
+constexpr double staircase_step_quads = 0.75;
+
 /// A corner of a boundary loop, seen at a length scale.
 struct BoundaryCorner {
   int vertex = -1;
@@ -39,8 +48,9 @@ struct BoundaryCorner {
 /// is) and by at least half the window's turn themselves (a hole a few quads round
 /// or a fillet, whose turn is spread, has none). A CAD corner (straight or smooth
 /// on both sides) is found with its exact angle; the teeth of a scanned boundary
-/// smaller than the window are not corners; its steps are, at their sharp vertex.
-/// Sorted by vertex. Precondition: `surface` is a manifold triangle surface.
+/// smaller than the window are not corners; its steps are, at their sharp vertex,
+/// unless they make a staircase (staircase_step_quads, a quad being twice the
+/// window). Sorted by vertex. Precondition: `surface` is a manifold triangle surface.
 std::vector<BoundaryCorner> boundary_corners(const TriangleSoup& surface, double window,
                                              double tolerance_deg = corner_angle_tolerance_deg);
 

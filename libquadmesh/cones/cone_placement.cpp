@@ -93,12 +93,15 @@ std::vector<int> ring_neighbourhood(const TriangleSoup& soup, const SurfaceAdjac
 }
 
 /// Whether a vertex lies within `separation` edges of an interior cone other than
-/// cones[moving]: a breadth-first walk of at most `separation` rings from the
-/// vertex (asked only of the moves worth making, not of every vertex).
+/// cones[moving], or nearer than `min_distance` to one (straight line: on a fine
+/// scan `separation` edges can be less than a quad or two): a breadth-first walk of
+/// at most `separation` rings from the vertex (asked only of the moves worth making,
+/// not of every vertex).
 class ConeCrowding {
  public:
-  ConeCrowding(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, int separation)
-      : soup_(soup), adjacency_(adjacency), separation_(separation), stamp_(soup.points.size(), 0) {}
+  ConeCrowding(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, int separation, double min_distance)
+      : soup_(soup), adjacency_(adjacency), separation_(separation), min_distance_(min_distance),
+        stamp_(soup.points.size(), 0) {}
 
   bool near_other(const std::vector<Cone>& cones, std::size_t moving, int v) {
     std::vector<int> others;
@@ -106,6 +109,9 @@ class ConeCrowding {
       if (j != moving && !adjacency_.boundary_vertex[static_cast<std::size_t>(cones[j].vertex)])
         others.push_back(cones[j].vertex);
     if (others.empty()) return false;
+    const Vec3& at = soup_.points[static_cast<std::size_t>(v)];
+    for (int o : others)
+      if ((soup_.points[static_cast<std::size_t>(o)] - at).squaredNorm() < min_distance_ * min_distance_) return true;
     std::sort(others.begin(), others.end());
     ++walk_;
     std::vector<std::pair<int, int>> queue{{v, 0}};
@@ -128,6 +134,7 @@ class ConeCrowding {
   const TriangleSoup& soup_;
   const SurfaceAdjacency& adjacency_;
   int separation_;
+  double min_distance_;
   std::vector<unsigned> stamp_;  ///< the walk that last reached each vertex
   unsigned walk_ = 0;
 };
@@ -139,7 +146,8 @@ class ConeCrowding {
 /// the largest turn left (radians).
 double align_loops_by_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const LoopTurns& model,
                             const std::vector<double>& curvature, const std::vector<char>& eligible,
-                            const std::vector<char>& pinned, int rings, int separation, std::vector<Cone>& cones) {
+                            const std::vector<char>& pinned, int rings, int separation, double min_distance,
+                            std::vector<Cone>& cones) {
   const std::size_t loops = model.rows();
   std::vector<double> kappa = target_curvature(adjacency, quads_per_vertex(adjacency, cones));
   Eigen::VectorXd rhs(static_cast<Eigen::Index>(kappa.size()));
@@ -154,7 +162,7 @@ double align_loops_by_cones(const TriangleSoup& soup, const SurfaceAdjacency& ad
     return c;
   };
   double current = cost(dot);
-  ConeCrowding crowding(soup, adjacency, separation);
+  ConeCrowding crowding(soup, adjacency, separation, min_distance);
   // when no move within `rings` edges helps any more and the loops are still
   // turned, the cones may go farther (on a coarse triangulation `rings` edges
   // are a few quads only)
@@ -222,8 +230,8 @@ double size_spread(const Eigen::VectorXd& u, const std::vector<double>& area, do
 void relax_cones_for_size(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const ConeMetricSolver& solver,
                           const LoopTurns& model, const std::vector<double>& curvature,
                           const std::vector<double>& area, const std::vector<char>& eligible,
-                          const std::vector<char>& pinned, int separation, int passes, double slack,
-                          std::vector<Cone>& cones) {
+                          const std::vector<char>& pinned, int separation, double min_distance, int passes,
+                          double slack, std::vector<Cone>& cones) {
   auto alignment_cost = [&](const std::vector<Cone>& trial) {
     if (adjacency.boundary_loops.size() < 2) return 0.0;
     const std::vector<double> kappa = target_curvature(adjacency, quads_per_vertex(adjacency, trial));
@@ -244,7 +252,7 @@ void relax_cones_for_size(const TriangleSoup& soup, const SurfaceAdjacency& adja
   double mean = 0;
   double spread = size_spread(u, area, mean);
   double aligned = alignment_cost(cones);
-  ConeCrowding crowding(soup, adjacency, separation);
+  ConeCrowding crowding(soup, adjacency, separation, min_distance);
   for (int pass = 0; pass < passes; ++pass) {
     Eigen::VectorXd weighted(u.size());
     for (Eigen::Index v = 0; v < u.size(); ++v) weighted[v] = area[static_cast<std::size_t>(v)] * (u[v] - mean);
@@ -313,6 +321,43 @@ MetricBand metric_band(const Eigen::VectorXd& u, const std::vector<double>& area
     band.largest = std::max(band.largest, std::exp(mean - u[v]));
   }
   return band;
+}
+
+/// The largest quad size the metric makes, seen a quad at a time: per vertex that
+/// is no cone, the area-weighted mean of u over the vertices no cone nearer than
+/// `radius` (straight line, reached along the edges), h e^(-(that - mean u))
+/// over h at its largest. A scan's boundary tooth that the corners make straight
+/// (a vertex turning by 70-100 degrees, a fraction of a quad long) drops u at its
+/// own vertex only: the pointwise largest there is 10-13 x (bunny-open), the
+/// quads the lattice puts there are not.
+double quad_scale_largest(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u,
+                          const std::vector<double>& area, const std::vector<char>& cone, double mean,
+                          double radius) {
+  std::vector<unsigned> stamp(soup.points.size(), 0);
+  unsigned walk = 0;
+  double largest = 0;
+  std::vector<int> queue;
+  for (std::size_t v = 0; v < soup.points.size(); ++v) {
+    if (cone[v]) continue;
+    ++walk;
+    queue.assign(1, static_cast<int>(v));
+    stamp[v] = walk;
+    double weight = 0, sum = 0;
+    for (std::size_t next = 0; next < queue.size(); ++next) {
+      const auto w = static_cast<std::size_t>(queue[next]);
+      weight += area[w];
+      sum += area[w] * u[static_cast<Eigen::Index>(w)];
+      for (int f : adjacency.vertex_faces[w])
+        for (int x : soup.triangles[static_cast<std::size_t>(f)]) {
+          const auto xi = static_cast<std::size_t>(x);
+          if (stamp[xi] == walk) continue;
+          stamp[xi] = walk;
+          if (!cone[xi] && (soup.points[xi] - soup.points[v]).squaredNorm() < radius * radius) queue.push_back(x);
+        }
+    }
+    if (weight > 0) largest = std::max(largest, std::exp(mean - sum / weight));
+  }
+  return largest;
 }
 
 /// Sets marks[v] = value for every point v nearer than `radius` to `at`.
@@ -661,19 +706,21 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
     deficit -= step;
   }
   // the cones moved to align the loops, then to even the quad sizes; those at
-  // `pinned` vertices (a protrusion's cap) stay
+  // `pinned` vertices (a protrusion's cap) stay; none comes nearer another than
+  // the narrow parts' spacing
+  const double closest = options.narrow_cone_spacing * size;
   const auto settle = [&](std::vector<Cone>& set, const std::vector<char>& pinned) {
     if (set.size() == corner_count) return;
     if (steered)
       align_loops_by_cones(soup, adjacency, model, curvature, eligible, pinned, options.alignment_rings,
-                           options.cone_separation, set);
+                           options.cone_separation, closest, set);
     if (greedy && options.size_relaxation_passes > 0) {
       relax_cones_for_size(soup, adjacency, solver, model, curvature, area, eligible, pinned,
-                           options.cone_separation, options.size_relaxation_passes,
+                           options.cone_separation, closest, options.size_relaxation_passes,
                            options.relaxation_alignment_slack, set);
       if (steered)
         align_loops_by_cones(soup, adjacency, model, curvature, eligible, pinned, options.alignment_rings,
-                             options.cone_separation, set);
+                             options.cone_separation, closest, set);
     }
   };
   settle(cones, std::vector<char>(soup.points.size(), 0));
@@ -685,15 +732,18 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
   if (options.min_metric_band > 0 || options.max_metric_largest > 0) {
     std::vector<char> placed(area.size(), 0);
     for (const Cone& c : cones) placed[static_cast<std::size_t>(c.vertex)] = 1;
-    const MetricBand band =
-        metric_band(solver.solve(target_curvature(adjacency, quads_per_vertex(adjacency, cones)), curvature), area,
-                    placed);
+    const Eigen::VectorXd u = solver.solve(target_curvature(adjacency, quads_per_vertex(adjacency, cones)), curvature);
+    const MetricBand band = metric_band(u, area, placed);
+    // the largest a quad at a time (half a quad round each vertex)
+    const double largest = options.max_metric_largest > 0
+                               ? quad_scale_largest(soup, adjacency, u, area, placed, band.mean, 0.5 * size)
+                               : band.largest;
     if (band.share < options.min_metric_band ||
-        (options.max_metric_largest > 0 && band.largest > options.max_metric_largest))
+        (options.max_metric_largest > 0 && largest > options.max_metric_largest))
       throw Error(ErrorCode::unsupported,
                   fmt::format("the {} cones leave {:.0f}% of the area with quads within [0.5, 2] x the size (up to "
                               "{:.0f} x): not mapped",
-                              cones.size(), 100 * band.share, band.largest));
+                              cones.size(), 100 * band.share, largest));
   }
   return cones;
 }

@@ -80,7 +80,9 @@ struct ConePlacementOptions {
   /// a whole quarter turn (cross_field.h LoopTurns); twice and three times as far
   /// when no nearer move helps and the loops are still turned...
   int alignment_rings = 4;
-  /// ...keeping this many edges from the other interior cones.
+  /// ...keeping this many edges from the other interior cones, and never nearer
+  /// than narrow_cone_spacing quads (straight line: on a fine scan six edges are
+  /// a quad or two).
   int cone_separation = 6;
   /// The cones steer the field's turn round every handle too (cross_field.h
   /// LoopTurns' handle rows): what the handles' trivial connection turns back, the

@@ -49,12 +49,13 @@ bool within(double x, double low, double high) { return x >= low && x <= high; }
 
 }  // namespace
 
-CornerQuads corner_quads(const PolygonMesh& mesh, const TriangleSoup& reference) {
+CornerQuads corner_quads(const PolygonMesh& mesh, const TriangleSoup& reference, double quad_size) {
   const BoundaryPoints boundary = boundary_points(mesh);
   std::vector<std::size_t> on_boundary;
   for (std::size_t p = 0; p < mesh.points.size(); ++p)
     if (std::isfinite(boundary.shortest_boundary_edge[p])) on_boundary.push_back(p);
-  // the window: half the mesh's mean edge (corner_window_quads)
+  // the window: half a quad (corner_window_quads), the requested size's or,
+  // without one, the mesh's mean edge
   double edges = 0, total = 0;
   for (const std::vector<int>& face : mesh.faces)
     for (std::size_t k = 0; k < face.size(); ++k, ++edges)
@@ -62,7 +63,8 @@ CornerQuads corner_quads(const PolygonMesh& mesh, const TriangleSoup& reference)
                 mesh.points[static_cast<std::size_t>(face[k])]).norm();
   CornerQuads result;
   if (edges == 0 || !(total > 0)) return result;
-  for (const BoundaryCorner& corner : boundary_corners(reference, corner_window_quads * total / edges)) {
+  const double quad = quad_size > 0 ? quad_size : total / edges;
+  for (const BoundaryCorner& corner : boundary_corners(reference, corner_window_quads * quad)) {
     const double angle = corner.angle_deg;
     CornerCount c;
     c.position = reference.points[static_cast<std::size_t>(corner.vertex)];

@@ -41,11 +41,13 @@ struct CornerQuads {
   std::vector<CornerCount> corners;  ///< every corner, in the reference's vertex order
 };
 
-/// The corners of `reference` at the scale of half the mean edge of `mesh`
-/// (boundary_corners) and the quads of `mesh` at each: the faces around the
+/// The corners of `reference` at the scale of half a quad (boundary_corners):
+/// of `quad_size` when it is > 0 (the requested size, the one the cone
+/// placement sees corners at), else of the mean edge of `mesh`; and the quads of
+/// `mesh` at each: the faces around the
 /// boundary point of `mesh` nearest to the corner, if it is within
 /// corner_match_share of its shortest boundary edge, else none (quads = 0).
 /// Precondition: `reference` is a manifold triangle surface.
-CornerQuads corner_quads(const PolygonMesh& mesh, const TriangleSoup& reference);
+CornerQuads corner_quads(const PolygonMesh& mesh, const TriangleSoup& reference, double quad_size = 0);
 
 }  // namespace qm

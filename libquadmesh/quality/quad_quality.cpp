@@ -473,10 +473,10 @@ void measure_size_band(const PolygonMesh& mesh, double target_size, QuadQuality&
   q.size_ratio_min = band.min_ratio;
 }
 
-/// The reference's corners and the quads at each.
-void measure_corners(const PolygonMesh& mesh, const TriangleSoup* reference, QuadQuality& q) {
+/// The reference's corners, at the target's scale when there is one, and the quads at each.
+void measure_corners(const PolygonMesh& mesh, const TriangleSoup* reference, double target_size, QuadQuality& q) {
   if (!reference) return;
-  const CornerQuads c = corner_quads(mesh, *reference);
+  const CornerQuads c = corner_quads(mesh, *reference, target_size);
   q.corners_convex = c.convex;
   q.corners_convex_wrong = c.convex_wrong;
   q.corners_concave = c.concave;
@@ -497,7 +497,7 @@ QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference,
   measure_edges(mesh, connectivity, q);
   measure_hausdorff(mesh, reference, q);
   measure_size_band(mesh, target_size, q);
-  measure_corners(mesh, reference, q);
+  measure_corners(mesh, reference, target_size, q);
   return q;
 }
 

@@ -159,7 +159,8 @@ std::vector<double> sound_scaled_jacobians(const PolygonMesh& mesh);
 /// not rejected) and, when `reference` is not null, its two-sided Hausdorff
 /// distance to that triangulated surface (hausdorff.h; quads split along 0-2).
 /// With `target_size` > 0 the quad sizes are set against it (size_band.h), and
-/// with a reference its corners are checked (corner_quads.h).
+/// with a reference its corners are checked (corner_quads.h), seen at the target's
+/// scale when there is one, else at the mesh's mean edge.
 /// Every field is documented in QuadQuality.
 QuadQuality quad_quality(const PolygonMesh& mesh, const TriangleSoup* reference, double target_size = 0);
 

@@ -7,6 +7,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -170,4 +171,44 @@ TEST_CASE("teeth of a scanned boundary smaller than the window are not corners; 
   CHECK(peaks == 4);
   CHECK(valleys == 3);
   CHECK(right == 4);
+}
+
+TEST_CASE("a staircase of steps lower than 0.75 quads has no corners; a step or a step and a half keeps its own") {
+  // a 1.1 square of cells 0.055 whose floor rises in steps 0.11 (0.55 quads of 0.2)
+  // high and deep from x = 0.33: seen at quads of 0.2 (window 0.1) each step is a
+  // convex and a concave right corner (steps of 90 and 270 degrees)
+  const double h = 0.055, quad = 0.2;
+  const auto corners_of = [&](const std::function<int(int)>& floor) {
+    const PolygonMesh cells = grid_cells(20, h, [&](int i, int j) { return floor(i) >= 0 && j >= floor(i); });
+    return boundary_corners(triangles_of(cells), corner_window_quads * quad);
+  };
+  const auto count = [](const std::vector<BoundaryCorner>& cs, double angle) {
+    return std::count_if(cs.begin(), cs.end(),
+                         [&](const BoundaryCorner& c) { return std::abs(c.angle_deg - angle) < 1e-9; });
+  };
+  // one step up: a shoulder, its two corners stay
+  const std::vector<BoundaryCorner> shoulder = corners_of([](int i) { return i < 6 ? 0 : 2; });
+  CHECK(shoulder.size() == 6);
+  CHECK(count(shoulder, 90) == 5);
+  CHECK(count(shoulder, 270) == 1);
+  // a step and a half (up, then a wall at x = 0.44: three corners in a row) keeps
+  // its corners, beside the three other square corners
+  const std::vector<BoundaryCorner> jog = corners_of([](int i) { return i < 6 ? 0 : i < 8 ? 2 : -1; });
+  CHECK(jog.size() == 6);
+  CHECK(count(jog, 90) == 5);
+  CHECK(count(jog, 270) == 1);
+  // two steps up (four corners in a row, each 0.55 quads from the next): a
+  // staircase, no corner but the square's four
+  const std::vector<BoundaryCorner> stairs = corners_of([](int i) { return i < 6 ? 0 : i < 8 ? 2 : 4; });
+  CHECK(stairs.size() == 4);
+  CHECK(count(stairs, 90) == 4);
+  // the same steps ending at a wall (x = 0.55, five corners in a row): the net
+  // quarter turn stays at one of them, beside the three other square corners
+  const std::vector<BoundaryCorner> to_wall =
+      corners_of([](int i) { return i < 6 ? 0 : i < 8 ? 2 : i < 10 ? 4 : -1; });
+  CHECK(to_wall.size() == 4);
+  CHECK(count(to_wall, 90) == 4);
+  // seen at quads of 0.1 the steps are 1.1 quads apart: corners again
+  const PolygonMesh cells = grid_cells(20, h, [](int i, int j) { return j >= (i < 6 ? 0 : i < 8 ? 2 : 4); });
+  CHECK(boundary_corners(triangles_of(cells), corner_window_quads * 0.1).size() == 8);
 }

@@ -1,5 +1,6 @@
 #include "libquadmesh/pipeline/internal/cone_route.h"
 
+#include "libquadmesh/cones/boundary_spikes.h"
 #include "libquadmesh/cones/cone_map.h"
 #include "libquadmesh/cones/cone_placement.h"
 #include "libquadmesh/cones/wide_corners.h"
@@ -395,15 +396,17 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
 }
 
 /// What the cone route needs of `setup` (its soup, preamble, area and diagonal, not
-/// the forms), S's boundary vertices that the corners at the requested size turn by
-/// more than 45 degrees given the inner edges to turn on (wide_corners.h
-/// split_turned_boundary: a scan's teeth; nothing on a CAD part).
+/// the forms), with S's boundary spikes shorter than a quad clipped
+/// (boundary_spikes.h) and its boundary vertices that the corners at the requested
+/// size turn by more than 45 degrees given the inner edges to turn on split
+/// (wide_corners.h split_turned_boundary): a scan's teeth; nothing on a CAD part.
 FormSetup turned_boundary_setup(const FormSetup& setup) {
   FormSetup out;
   out.soup = setup.soup;
   out.preamble = setup.preamble;
   out.area = setup.area;
   out.diagonal = setup.diagonal;
+  clip_boundary_spikes(out.soup, setup.preamble.size_requested);
   split_turned_boundary(out.soup, corner_cones(out.soup, setup.preamble.size_requested));
   return out;
 }
