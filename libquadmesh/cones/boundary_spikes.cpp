@@ -5,9 +5,7 @@
 #include "libquadmesh/param/internal/surface_adjacency.h"
 #include "libquadmesh/topology/internal/soup_cleaning.h"
 
-#include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <vector>
 
 namespace qm {
@@ -28,26 +26,29 @@ std::vector<int> spike_triangles(const TriangleSoup& soup, double quad) {
   for (std::size_t v = 0; v < soup.points.size(); ++v) {
     if (!adjacency.boundary_vertex[v] || corner[v]) continue;
     const std::vector<int>& faces = adjacency.vertex_faces[v];
+    // the corner's angle first: most boundary vertices are no spike
     double angle = 0;
-    bool fits = true;  // short edges, inner neighbours off the boundary, apart from the spikes clipped before
     for (int f : faces) {
       const Triangle& t = soup.triangles[static_cast<std::size_t>(f)];
       int k = 0;
       while (t[static_cast<std::size_t>(k)] != static_cast<int>(v)) ++k;
       angle += corner_angle(soup, static_cast<std::size_t>(f), k);
-      const int a = t[static_cast<std::size_t>((k + 1) % 3)];  // v -> a is this triangle's edge after v
-      for (int p : t) fits = fits && !touched[static_cast<std::size_t>(p)];
-      fits = fits && (soup.points[static_cast<std::size_t>(a)] - soup.points[v]).norm() < quad;
-      // an edge v -> a that another triangle shares is inner: a must not be on the
-      // boundary, or clipping would pinch the surface at it
-      fits = fits && (adjacency.find(a, static_cast<int>(v)).face < 0 || !adjacency.boundary_vertex[static_cast<std::size_t>(a)]);
     }
-    // the edge before v along the loop (v's last neighbour) is short too
-    const std::vector<int>& loop = adjacency.boundary_loops[static_cast<std::size_t>(adjacency.loop_of_vertex[v])];
-    const std::size_t at = static_cast<std::size_t>(std::find(loop.begin(), loop.end(), static_cast<int>(v)) - loop.begin());
-    const auto before = static_cast<std::size_t>(loop[(at + loop.size() - 1) % loop.size()]);
-    fits = fits && (soup.points[before] - soup.points[v]).norm() < quad && loop.size() > 3;
-    if (!fits || angle * 180 / M_PI >= spike_angle_deg) continue;
+    if (angle * 180 / M_PI >= spike_angle_deg) continue;
+    const auto loop = static_cast<std::size_t>(adjacency.loop_of_vertex[v]);
+    bool fits = adjacency.boundary_loops[loop].size() > 3 && !touched[v];
+    // every edge at v short, every inner one ending off the boundary (clipping would
+    // pinch the surface there), no point shared with a spike clipped in this pass
+    for (int f : faces) {
+      const Triangle& t = soup.triangles[static_cast<std::size_t>(f)];
+      for (int p : t) {
+        const auto pi = static_cast<std::size_t>(p);
+        if (pi == v) continue;
+        fits = fits && !touched[pi] && (soup.points[pi] - soup.points[v]).norm() < quad &&
+               (adjacency.is_boundary_edge(static_cast<int>(v), p) || !adjacency.boundary_vertex[pi]);
+      }
+    }
+    if (!fits) continue;
     for (int f : faces) {
       for (int p : soup.triangles[static_cast<std::size_t>(f)]) touched[static_cast<std::size_t>(p)] = 1;
       out.push_back(f);
