@@ -7,6 +7,8 @@
 
 #include "libquadmesh/quality/quad_quality.h"
 
+#include <vector>
+
 namespace qm {
 
 /// The band's ends, as multiples of the target size.
@@ -22,5 +24,15 @@ struct SizeBand {
 
 /// Precondition: target > 0.
 SizeBand quad_size_band(const PolygonMesh& mesh, double target);
+
+/// Each quad's size / target, in face order (faces with 4 corners only).
+/// Precondition: target > 0.
+std::vector<double> quad_size_ratios(const PolygonMesh& mesh, double target);
+
+/// The share of `ratios` within [low, high] once each is multiplied by `factor`
+/// (quads on a lattice `factor` times coarser), and the largest: what a lattice
+/// of another scale would give, were the quads the same otherwise. NaN share
+/// without ratios.
+SizeBand scaled_size_band(const std::vector<double>& ratios, double factor);
 
 }  // namespace qm

@@ -4,6 +4,7 @@
 // 30-degree corner.
 #include "libquadmesh/quality/corner_quads.h"
 #include "libquadmesh/quality/quad_quality.h"
+#include "libquadmesh/quality/size_band.h"
 
 #include <doctest/doctest.h>
 
@@ -138,6 +139,33 @@ TEST_CASE("quad sizes against a target: the band share and the extreme ratios") 
   const QuadQuality r = quad_quality(quads, &square, 0.25);
   CHECK(r.corners_convex == 4);
   CHECK(r.corners_convex_wrong == 0);
+}
+
+TEST_CASE("quad sizes on a lattice of another scale: each ratio scaled, the band counted again") {
+  // 16 quads 0.25 wide and 4 quads 0.125 wide (a finer corner), against 0.3: the
+  // small ones at 0.417 x are below the band, the others at 0.833 x in it
+  PolygonMesh quads = grid_cells(4, 0.25, all_cells);
+  const PolygonMesh fine = grid_cells(2, 0.125, all_cells);
+  const int offset = static_cast<int>(quads.points.size());
+  for (const Vec3& p : fine.points) quads.points.push_back(p + Vec3(2, 0, 0));
+  for (auto face : fine.faces) {
+    for (int& v : face) v += offset;
+    quads.faces.push_back(face);
+  }
+  const std::vector<double> ratios = quad_size_ratios(quads, 0.3);
+  REQUIRE(ratios.size() == 20);
+  const SizeBand as_is = scaled_size_band(ratios, 1.0);
+  CHECK(as_is.share_in_band == doctest::Approx(0.8));
+  CHECK(as_is.min_ratio == doctest::Approx(0.125 / 0.3));
+  CHECK(as_is.max_ratio == doctest::Approx(0.25 / 0.3));
+  CHECK(as_is.share_in_band == quad_size_band(quads, 0.3).share_in_band);
+  // a lattice 1.25 x coarser: 0.521 x and 1.04 x, every quad in the band
+  const SizeBand coarser = scaled_size_band(ratios, 1.25);
+  CHECK(coarser.share_in_band == 1.0);
+  CHECK(coarser.max_ratio == doctest::Approx(1.25 * 0.25 / 0.3));
+  // 2.5 x coarser: the large ones at 2.08 x leave it
+  CHECK(scaled_size_band(ratios, 2.5).share_in_band == doctest::Approx(0.2));
+  CHECK(std::isnan(scaled_size_band({}, 1.0).share_in_band));
 }
 
 TEST_CASE("teeth of a scanned boundary smaller than the window are not corners; seen closer they are") {

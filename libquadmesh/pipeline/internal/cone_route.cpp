@@ -273,6 +273,31 @@ constexpr double finer_lattices[] = {0.95, 0.9};
 constexpr int max_finer_attempts = 6;
 constexpr double finer_lattice_below = 1.1;
 
+/// The lattice scales tried when a sound result has every quad within
+/// max_size_ratio but fewer than size_band_goal of them in the band, its sizes
+/// off the band's middle (the quads round the small holes of a plate below half
+/// the size while most are near it), nearest 1 first: those under which its
+/// quads, each scaled, would have at least centring_share_goal of them in the
+/// band and none above centred_max_ratio (the same cones mapped again on another
+/// lattice give nearly, not exactly, the quads scaled), at most
+/// max_centring_attempts of them.
+constexpr double centring_lattices[] = {1.04, 0.96, 1.08, 0.92, 1.12, 0.88, 1.16, 1.2};
+constexpr double centring_share_goal = size_band_goal - 0.02;
+constexpr double centred_max_ratio = 0.95 * max_size_ratio;
+constexpr int max_centring_attempts = 3;
+
+/// The centring_lattices worth mapping for quads of these `ratios` (quad size /
+/// the requested size), in order.
+std::vector<double> centring_lattice_factors(const std::vector<double>& ratios) {
+  std::vector<double> out;
+  for (double factor : centring_lattices) {
+    const SizeBand scaled = scaled_size_band(ratios, factor);
+    if (scaled.share_in_band >= centring_share_goal && scaled.max_ratio <= centred_max_ratio) out.push_back(factor);
+    if (out.size() == static_cast<std::size_t>(max_centring_attempts)) break;
+  }
+  return out;
+}
+
 /// The cone candidate judged as its quads would be written: a sound one gets the
 /// deviation tolerance the Abel route refines to (the written quads' fitting uses
 /// it), and when its quads are farther from S than the acceptance allows, the
@@ -411,6 +436,36 @@ FormSetup turned_boundary_setup(const FormSetup& setup) {
   return out;
 }
 
+/// The cones of `r` (sound, `band` its size band) mapped again on a lattice
+/// `factor` x the requested size: kept when sound, in the size band as written
+/// (size_band_goal of its quads in it and none above max_size_ratio, measured
+/// after the improvement the written quads get), with more of them in it than
+/// `band` and no more corners in another quad count.
+std::optional<ConeCandidate> centred_candidate(const FormSetup& setup, const QuadMeshOptions& options,
+                                               SurfaceTopology input, Stages& stages, const QuadMeshResult& r,
+                                               const SizeBand& band, double factor) {
+  stages.announce(fmt::format("{:.0f}% of the quads in the size band: the same cones on a lattice {:g} x the size",
+                              100 * band.share_in_band, factor));
+  const RoundingOrder order =
+      r.rounding_order == "translations_first" ? RoundingOrder::translations_first : RoundingOrder::cones_first;
+  ConeCandidate centred;
+  try {
+    centred.candidate = cone_quads(setup, r.cones, stages, factor, options.smoothing, order);
+  } catch (const Error&) {
+    return std::nullopt;  // no map on that lattice
+  }
+  if (!sound(centred.candidate.quality, input, options.acceptance)) return std::nullopt;
+  if (corner_mismatches(centred.candidate.result) > corner_mismatches(r)) return std::nullopt;
+  centred.band = size_band(centred.candidate.result);
+  QuadMeshResult written = centred.candidate.result;
+  improve_quads(written, options, stages);
+  const SizeBand as_written = size_band(written);
+  const bool in_band = std::min(centred.band.share_in_band, as_written.share_in_band) >= size_band_goal &&
+                       std::max(centred.band.max_ratio, as_written.max_ratio) <= max_size_ratio;
+  if (!in_band || !(centred.band.share_in_band > band.share_in_band)) return std::nullopt;
+  return centred;
+}
+
 /// The cone route's candidate: the placements in turn, until one gives sound quads
 /// (cramped cones fold the map). Throws qm::Error with the first placement's
 /// failure when none gives quads.
@@ -448,6 +503,15 @@ ConeCandidate cone_candidate(const FormSetup& form_setup, const QuadMeshOptions&
   // quads stay within max_size_ratio and in the band. Far larger quads are the
   // metric's (too few cones), which no lattice mends
   const SizeBand band = cones->band;
+  if (sound(cones->candidate.quality, input, options.acceptance) && band.max_ratio <= max_size_ratio &&
+      band.share_in_band < size_band_goal) {
+    const QuadMeshResult& r = cones->candidate.result;
+    for (double factor : centring_lattice_factors(quad_size_ratios(polygon_mesh(r.quads), r.size_requested))) {
+      if (std::optional<ConeCandidate> centred = centred_candidate(setup, options, input, stages, r, band, factor))
+        return std::move(*centred);
+    }
+    return std::move(*cones);
+  }
   if (!sound(cones->candidate.quality, input, options.acceptance) || band.max_ratio <= max_size_ratio ||
       band.max_ratio > finer_lattice_below * max_size_ratio)
     return std::move(*cones);
