@@ -437,9 +437,10 @@ FormSetup turned_boundary_setup(const FormSetup& setup) {
 }
 
 /// The cones of `r` (sound, `band` its size band) mapped again on a lattice
-/// `factor` x the requested size: kept when sound, in the size band as written
-/// (size_band_goal of its quads in it and none above max_size_ratio, measured
-/// after the improvement the written quads get), with more of them in it than
+/// `factor` x the requested size, judged and improved as written: kept when sound,
+/// within the acceptance's distance of S, in the size band (size_band_goal of its
+/// quads in it and none above max_size_ratio, both as mapped and as written: the
+/// smoothing moves the largest quads' corners too), with more of them in it than
 /// `band` and no more corners in another quad count.
 std::optional<ConeCandidate> centred_candidate(const FormSetup& setup, const QuadMeshOptions& options,
                                                SurfaceTopology input, Stages& stages, const QuadMeshResult& r,
@@ -456,13 +457,15 @@ std::optional<ConeCandidate> centred_candidate(const FormSetup& setup, const Qua
   }
   if (!sound(centred.candidate.quality, input, options.acceptance)) return std::nullopt;
   if (corner_mismatches(centred.candidate.result) > corner_mismatches(r)) return std::nullopt;
+  const SizeBand as_mapped = size_band(centred.candidate.result);
+  judge_as_written(centred, options, setup.diagonal, input, stages);
+  improve_quads(centred.candidate.result, options, stages);
   centred.band = size_band(centred.candidate.result);
-  QuadMeshResult written = centred.candidate.result;
-  improve_quads(written, options, stages);
-  const SizeBand as_written = size_band(written);
-  const bool in_band = std::min(centred.band.share_in_band, as_written.share_in_band) >= size_band_goal &&
-                       std::max(centred.band.max_ratio, as_written.max_ratio) <= max_size_ratio;
-  if (!in_band || !(centred.band.share_in_band > band.share_in_band)) return std::nullopt;
+  const bool in_band = std::min(as_mapped.share_in_band, centred.band.share_in_band) >= size_band_goal &&
+                       std::max(as_mapped.max_ratio, centred.band.max_ratio) <= max_size_ratio;
+  if (!in_band || !(centred.band.share_in_band > band.share_in_band) ||
+      !(centred.distance <= options.acceptance.max_hausdorff_relative))
+    return std::nullopt;
   return centred;
 }
 
