@@ -274,7 +274,8 @@ constexpr int max_finer_attempts = 6;
 constexpr double finer_lattice_below = 1.1;
 
 /// The lattice scales tried when a sound result has every quad within
-/// max_size_ratio but fewer than size_band_goal of them in the band, its sizes
+/// max_size_ratio but fewer than size_band_goal of them in the band (a size asked
+/// for, not a quad count), its sizes
 /// off the band's middle (the quads round the small holes of a plate below half
 /// the size while most are near it), nearest 1 first: those under which its
 /// quads, each scaled, would have at least centring_share_goal of them in the
@@ -506,8 +507,9 @@ ConeCandidate cone_candidate(const FormSetup& form_setup, const QuadMeshOptions&
   // quads stay within max_size_ratio and in the band. Far larger quads are the
   // metric's (too few cones), which no lattice mends
   const SizeBand band = cones->band;
-  if (sound(cones->candidate.quality, input, options.acceptance) && band.max_ratio <= max_size_ratio &&
-      band.share_in_band < size_band_goal) {
+  // (not with a quad count asked for: another lattice is another count)
+  if (options.quads == 0 && sound(cones->candidate.quality, input, options.acceptance) &&
+      band.max_ratio <= max_size_ratio && band.share_in_band < size_band_goal) {
     const QuadMeshResult& r = cones->candidate.result;
     for (double factor : centring_lattice_factors(quad_size_ratios(polygon_mesh(r.quads), r.size_requested))) {
       if (std::optional<ConeCandidate> centred = centred_candidate(setup, options, input, stages, r, band, factor))
