@@ -662,6 +662,37 @@ TEST_CASE("mesh --singularities auto: a T-plate the Abel route folds meshes with
   CHECK(q["size_ratio_max"].get<double>() <= 3.0);
 }
 
+TEST_CASE("mesh: a CAD part whose quads fold on Gmsh's first triangulation is meshed on a finer one, with a warning" *
+          doctest::test_suite("slow")) {
+  // the rod end at 3% of the diagonal: on Gmsh's triangles of 0.75 x the quad size
+  // every cone placement folds and so do the Abel quads (exit 1 before); on
+  // triangles of 0.6 x the quad size the cones are sound
+  const std::string dir = test::scratch_dir("cli_cad_retry");
+  const std::string output = dir + "/out.msh", report = dir + "/report.json";
+  const Run run = quadmesh("mesh " + quoted(test::example("rod-end.geo")) + " -o " + quoted(output) +
+                           " --size 3% --report " + quoted(report));
+  REQUIRE(run.status == 0);
+  const std::vector<std::string> lines = run.error_lines();
+  REQUIRE(lines.size() == 1);
+  CHECK(lines[0].rfind("quadmesh: warning: Gmsh's triangulation of the part (triangles up to", 0) == 0);
+  CHECK(lines[0].find("0.6 x the quad size: --cad-mesh-size") != std::string::npos);
+  const auto j = nlohmann::json::parse(slurp(report));
+  const auto& q = j["quality"];
+  CHECK(q["euler_characteristic"] == -1);
+  CHECK(q["boundary_loops"] == 3);
+  CHECK(q["triangles"] == 0);
+  CHECK(q["inverted"] == 0);
+  CHECK(q["min_scaled_jacobian"].get<double>() >= 0.3);
+  // the size the warning names gives these quads directly, without a warning
+  const std::string named = "--cad-mesh-size ";
+  const std::size_t at = lines[0].find(named) + named.size();
+  const std::string size = lines[0].substr(at, lines[0].find(')', at) - at);
+  const Run given = quadmesh("mesh " + quoted(test::example("rod-end.geo")) + " -o " + quoted(dir + "/given.msh") +
+                             " --size 3% --cad-mesh-size " + size + " -q");
+  CHECK(given.status == 0);
+  CHECK(given.error_lines().empty());
+}
+
 TEST_CASE("mesh (auto): a 16-degree notch's tip is a lattice point in four quads, the quads' boundary goes round it" *
           doctest::test_suite("slow")) {
   // the plate turns 343.7 degrees round the tip of plate-v-hole's triangular hole:

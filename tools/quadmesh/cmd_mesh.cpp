@@ -1,5 +1,6 @@
 #include "io/atomic_file.h"
 #include "io/deck_element.h"
+#include "io/file_format.h"
 #include "io/write_mesh.h"
 #include "libquadmesh/pipeline/mesh_quads.h"
 #include "libquadmesh/quality/hausdorff.h"
@@ -160,11 +161,21 @@ LongestEdge longest_quad_edge(const LatticeQuads& quads, const Vec3& near, doubl
 
 }  // namespace
 
+namespace {
+
+/// Whether quads of quality `q` conform to an input of Euler characteristic `chi`
+/// with `loops` boundary loops: its topology, manifold, consistently oriented,
+/// quads only.
+bool conforms(const QuadQuality& q, int chi, int loops) {
+  return q.euler_characteristic == chi && q.boundary_loops == loops && q.manifold && q.consistently_oriented &&
+         q.triangles == 0 && q.other_faces == 0;
+}
+
+}  // namespace
+
 void require_conforming(const MeshSummary& s, const QuadMeshResult& r) {
   const QuadQuality& q = s.quality;
-  if (q.euler_characteristic == s.input_euler_characteristic && q.boundary_loops == s.input_boundary_loops &&
-      q.manifold && q.consistently_oriented && q.triangles == 0 && q.other_faces == 0)
-    return;
+  if (conforms(q, s.input_euler_characteristic, s.input_boundary_loops)) return;
   const std::string where = near_first_problem(r, " first");
   // the usual cause: a long end or a protrusion, where every such differential
   // decays and the cells grow until the boundary there collapses
@@ -330,20 +341,78 @@ void warn_about_result(const MeshSummary& summary, const QuadMeshResult& result,
   warn_if_far(summary, result, diagonal);
 }
 
+namespace {
+
+/// Gmsh's triangle sizes tried, as fractions of the quad size, in this order, when
+/// its first triangulation of a CAD part (0.75 x the quad size by default) gives
+/// no conforming quads: where cones crowd a narrow part, whether a map folds
+/// depends on the triangles under it (the T-plate at 2%: folds at 0.75 and 0.6,
+/// sound at 0.45; the rod end at 3%: sound at 0.6).
+constexpr double cad_retry_mesh_sizes[] = {0.6, 0.45, 0.33};
+
+/// Whether `r`'s quads pass require_conforming against `in`.
+bool keeps_topology(const QuadMeshResult& r, const InputSurface& in) {
+  return conforms(quad_quality(polygon_mesh(r.quads), nullptr), static_cast<int>(in.surface.report.euler_characteristic),
+                  static_cast<int>(in.surface.report.boundary_loop_count()));
+}
+
+/// When `result`, meshed on Gmsh's first triangulation of the CAD part, is not
+/// conforming (and no --cad-mesh-size was given): the part triangulated again at
+/// each of cad_retry_mesh_sizes and meshed, until the quads conform; `in` and
+/// `result` are then those, and the returned line says so (for a warning).
+/// Otherwise they stay (require_conforming then reports the first failure) and
+/// the line is empty. A triangulation that fails to read, or whose topology is
+/// not the first one's, is passed over.
+std::string remesh_on_finer_triangulations(const MeshOptions& options, const CommonOptions& common,
+                                           io::ReadOptions read, const Progress& progress, InputSurface& in,
+                                           QuadMeshResult& result) {
+  if (keeps_topology(result, in) || !io::is_cad(io::format_of(options.input)) || common.cad_mesh_size > 0 ||
+      !(result.size_requested > 0))
+    return {};
+  const double first = in.file.cad_mesh_size;
+  for (double fraction : cad_retry_mesh_sizes) {
+    read.cad_mesh_size = fraction * result.size_requested;
+    progress.stage(fmt::format("no conforming quads on Gmsh's triangulation: the part triangulated again at {:g} x "
+                               "the quad size",
+                               fraction));
+    try {
+      InputSurface again = load_input_surface(options.input, read, common.largest_component, progress);
+      if (again.surface.report.euler_characteristic != in.surface.report.euler_characteristic ||
+          again.surface.report.boundary_loop_count() != in.surface.report.boundary_loop_count())
+        continue;
+      QuadMeshResult r = mesh_quads(again.surface.soup, quad_mesh_options(options),
+                                    [&](const std::string& stage) { progress.stage(stage); });
+      if (!keeps_topology(r, again)) continue;
+      in = std::move(again);
+      result = std::move(r);
+      return fmt::format("Gmsh's triangulation of the part (triangles up to {:.3g}) gave no conforming quads; these "
+                         "are meshed on a finer one (triangles up to {:.3g}, {:g} x the quad size: --cad-mesh-size "
+                         "{:.6g})",
+                         first, read.cad_mesh_size, fraction, read.cad_mesh_size);
+    } catch (const Error&) {
+      continue;  // this triangulation is passed over; the first failure stands
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
 int run_mesh(const MeshOptions& options, const CommonOptions& common) {
   if (options.each_component) return run_mesh_each_component(options, common);
   check_mesh_files(options);
   const Progress progress(common.quiet);
   const io::ReadOptions read = mesh_read_options(options, common);
   check_cad_quad_estimate(options, read);
-  const InputSurface in = load_input_surface(options.input, read, common.largest_component, progress);
+  InputSurface in = load_input_surface(options.input, read, common.largest_component, progress);
   require_supported(in.surface);
   check_form_choice(options, in.surface);
   check_quad_estimate(options, in.surface.soup);
   progress.stage(assess_applicability(in.surface).reason);
 
-  const QuadMeshResult result =
+  QuadMeshResult result =
       mesh_quads(in.surface.soup, quad_mesh_options(options), [&](const std::string& stage) { progress.stage(stage); });
+  const std::string remeshed = remesh_on_finer_triangulations(options, common, read, progress, in, result);
 
   std::optional<QuadraticQuads> quadratic;
   if (options.order == 2) {
@@ -359,6 +428,7 @@ int run_mesh(const MeshOptions& options, const CommonOptions& common) {
   progress.stage(fmt::format("writing {}", options.output));
   write_outputs(options, result, summary, quadratic ? &*quadratic : nullptr);
   print_summary(summary);
+  if (!remeshed.empty()) fmt::print(stderr, "quadmesh: warning: {}\n", remeshed);
   warn_about_result(summary, result, bounding_box_diagonal(in.surface.soup.points, in.surface.soup.triangles));
   return exit_ok;
 }
