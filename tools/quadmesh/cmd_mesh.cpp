@@ -357,7 +357,8 @@ bool keeps_topology(const QuadMeshResult& r, const InputSurface& in) {
 }
 
 /// When `result`, meshed on Gmsh's first triangulation of the CAD part, is not
-/// conforming (and no --cad-mesh-size was given): the part triangulated again at
+/// conforming (with --singularities auto, whose cones are what the triangles decide;
+/// and no --cad-mesh-size given): the part triangulated again at
 /// each of cad_retry_mesh_sizes and meshed, until the quads conform; `in` and
 /// `result` are then those, and the returned line says so (for a warning).
 /// Otherwise they stay (require_conforming then reports the first failure) and
@@ -367,6 +368,7 @@ std::string remesh_on_finer_triangulations(const MeshOptions& options, const Com
                                            io::ReadOptions read, const Progress& progress, InputSurface& in,
                                            QuadMeshResult& result) {
   if (keeps_topology(result, in) || !io::is_cad(io::format_of(options.input)) || common.cad_mesh_size > 0 ||
+      options.singularities != "auto" || options.form >= 0 || !options.coefficients.empty() || options.rotate ||
       !(result.size_requested > 0))
     return {};
   const double first = in.file.cad_mesh_size;

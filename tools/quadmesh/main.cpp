@@ -102,7 +102,7 @@ int run(int argc, char** argv) {
   app.add_flag("--largest-component", common.largest_component,
                "Keep only the largest connected component of the input");
   checked(app.add_option("--cad-mesh-size", common.cad_mesh_size,
-                         "CAD input: Gmsh triangle size (default: 0.75 x the quad size, finer where curves and surfaces bend; mesh: 0.6, 0.45 and 0.33 x in turn when its quads do not conform, with a warning)"),
+                         "CAD input: Gmsh triangle size (default: 0.75 x the quad size, finer where curves and surfaces bend; mesh with auto: 0.6, 0.45 and 0.33 x in turn when its quads do not conform, with a warning)"),
           positive_length());
   add_cad_sandbox_options(app, common);
   add_threads_option(app, common);
@@ -293,7 +293,7 @@ int run(int argc, char** argv) {
     sub->add_flag("--largest-component", common.largest_component,
                   "Keep only the largest connected component of the input");
     checked(sub->add_option("--cad-mesh-size", common.cad_mesh_size,
-                            "CAD input: Gmsh triangle size (default: 0.75 x the quad size, finer where curves and surfaces bend; mesh: 0.6, 0.45 and 0.33 x in turn when its quads do not conform, with a warning)"),
+                            "CAD input: Gmsh triangle size (default: 0.75 x the quad size, finer where curves and surfaces bend; mesh with auto: 0.6, 0.45 and 0.33 x in turn when its quads do not conform, with a warning)"),
             positive_length());
     add_cad_sandbox_options(*sub, common);
     add_threads_option(*sub, common);
