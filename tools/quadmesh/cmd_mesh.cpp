@@ -159,10 +159,6 @@ LongestEdge longest_quad_edge(const LatticeQuads& quads, const Vec3& near, doubl
   return longest;
 }
 
-}  // namespace
-
-namespace {
-
 /// Whether quads of quality `q` conform to an input of Euler characteristic `chi`
 /// with `loops` boundary loops: its topology, manifold, consistently oriented,
 /// quads only.
@@ -367,9 +363,10 @@ bool keeps_topology(const QuadMeshResult& r, const InputSurface& in) {
 std::string remesh_on_finer_triangulations(const MeshOptions& options, const CommonOptions& common,
                                            io::ReadOptions read, const Progress& progress, InputSurface& in,
                                            QuadMeshResult& result) {
-  if (keeps_topology(result, in) || !io::is_cad(io::format_of(options.input)) || common.cad_mesh_size > 0 ||
-      options.singularities != "auto" || options.form >= 0 || !options.coefficients.empty() || options.rotate ||
-      !(result.size_requested > 0))
+  // the options first: the topology's measure is for CAD parts meshed by auto only
+  if (!io::is_cad(io::format_of(options.input)) || common.cad_mesh_size > 0 || options.singularities != "auto" ||
+      options.form >= 0 || !options.coefficients.empty() || options.rotate || !(result.size_requested > 0) ||
+      keeps_topology(result, in))
     return {};
   const double first = in.file.cad_mesh_size;
   for (double fraction : cad_retry_mesh_sizes) {
