@@ -525,6 +525,28 @@ void add_cone_pairs(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
   }
 }
 
+/// Whether the metric `u` (its band `band`) of `cones` has quads above
+/// options.pair_largest x the size in a region away from the boundary round its
+/// lowest u (the largest quads: `placed` marks the cones, whose own u is the
+/// discretization's) that lacks two quarter turns or more: what
+/// add_cone_pairs caps with protrusion_caps.
+bool uncapped_protrusion(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                         const std::vector<double>& curvature, const Eigen::VectorXd& u,
+                         const MetricBand& band, const std::vector<char>& placed,
+                         const ConePlacementOptions& options, const std::vector<Cone>& cones) {
+  if (!(band.largest > options.pair_largest)) return false;
+  int lowest = -1;
+  for (std::size_t v = 0; v < placed.size(); ++v)
+    if (!placed[v] && !adjacency.boundary_vertex[v] &&
+        (lowest < 0 || u[static_cast<Eigen::Index>(v)] < u[lowest]))
+      lowest = static_cast<int>(v);
+  if (lowest < 0) return false;
+  const double level =
+      band.mean - std::log(options.pair_largest);  // quads above pair_largest x the size
+  return u[lowest] < level &&
+         cap_quarter_turns(soup, adjacency, curvature, u, level, lowest, cones) >= 2;
+}
+
 /// Per vertex, whether its distance is at least `least`.
 std::vector<char> farther_than(const std::vector<double>& distance, double least) {
   std::vector<char> out(distance.size(), 0);
@@ -739,11 +761,18 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
                                ? quad_scale_largest(soup, adjacency, u, area, placed, band.mean, 0.5 * size)
                                : band.largest;
     if (band.share < options.min_metric_band ||
-        (options.max_metric_largest > 0 && largest > options.max_metric_largest))
-      throw Error(ErrorCode::unsupported,
-                  fmt::format("the {} cones leave {:.0f}% of the area with quads within [0.5, 2] x the size (up to "
-                              "{:.0f} x): not mapped",
-                              cones.size(), 100 * band.share, largest));
+        (options.max_metric_largest > 0 && largest > options.max_metric_largest)) {
+      const std::string refusal = fmt::format(
+          "the {} cones leave {:.0f}% of the area with quads within [0.5, 2] x the size (up to "
+          "{:.0f} x): "
+          "not mapped",
+          cones.size(), 100 * band.share, largest);
+      if (!options.protrusion_caps && greedy &&
+          uncapped_protrusion(soup, adjacency, curvature, u, band, placed, options, cones))
+        throw UncappedProtrusion(ErrorCode::unsupported,
+                                 refusal + " (a protrusion's cap lacks its cones)");
+      throw Error(ErrorCode::unsupported, refusal);
+    }
   }
   return cones;
 }

@@ -24,6 +24,7 @@
 #include "libquadmesh/cones/boundary_corners.h"
 #include "libquadmesh/cones/cone_set.h"
 #include "libquadmesh/cones/seamless_map.h"
+#include "libquadmesh/core/error.h"
 
 #include <Eigen/Core>
 
@@ -124,6 +125,16 @@ struct ConePlacementOptions {
   RoundingOrder rounding = RoundingOrder::cones_first;
 };
 
+/// place_cones' refusal of a placement without protrusion_caps whose metric
+/// leaves a protrusion's cap lacking two quarter turns or more (protrusion_caps.h:
+/// the quads grow exponentially towards an ear's tip, bunny-open's 2300-3400 x the
+/// size): no placement without the caps takes those turns, so a route may go to
+/// the capped ones at once.
+class UncappedProtrusion : public Error {
+ public:
+  using Error::Error;
+};
+
 /// The corner cones for quads of edge `size` (> 0): the corners of the boundary
 /// at the quad scale (boundary_corners.h, a window of corner_window_quads x size),
 /// each in corner_quads_wanted quads (the quality module counts the same corners).
@@ -131,7 +142,9 @@ std::vector<Cone> corner_cones(const TriangleSoup& soup, double size, const Cone
 
 /// The corner cones and the interior cones that Gauss-Bonnet demands after them,
 /// for quads of edge `size` (> 0). Throws qm::Error (unsupported) when no interior
-/// vertex is far enough from the boundary to take a cone.
+/// vertex is far enough from the boundary to take a cone, or when the cones'
+/// metric leaves the sizes off (min_metric_band, max_metric_largest; an
+/// UncappedProtrusion when that is an uncapped protrusion's doing).
 std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, double size,
                               const ConePlacementOptions& options = {});
 

@@ -42,6 +42,8 @@ struct ConeAttempt {
   std::optional<std::vector<Cone>> cones;
   std::optional<Candidate> candidate;
   std::string error;
+  /// the placement was refused as an UncappedProtrusion (cone_placement.h)
+  bool uncapped_protrusion = false;
   std::exception_ptr unexpected;
   std::vector<std::string> messages;
   std::vector<std::pair<std::string, double>> timings;  ///< its stages (Stages)
@@ -56,6 +58,13 @@ constexpr double capped_min_metric_band = 0.85;
 /// with 65-92% of the area in the band) the map folds (141 triangles), at seven
 /// times the Abel run's cost. Pig's kept placement: 2.9 x.
 constexpr double capped_max_metric_largest = 10.0;
+
+/// What the cone route needs of `setup` (its soup, preamble, area and diagonal, not
+/// the forms), with S's boundary spikes shorter than a quad clipped
+/// (boundary_spikes.h) and its boundary vertices that the corners at the requested
+/// size turn by more than 45 degrees given the inner edges to turn on split
+/// (wide_corners.h split_turned_boundary): a scan's teeth; nothing on a CAD part.
+FormSetup turned_boundary_setup(const FormSetup& setup);
 
 /// How many placements the route tries at a time when the threads allow.
 constexpr std::size_t placements_side_by_side = 2;
