@@ -6,6 +6,7 @@
 #include "libquadmesh/cones/cone_map.h"
 #include "libquadmesh/cones/cone_metric.h"
 #include "libquadmesh/cones/cross_field.h"
+#include "libquadmesh/cones/fillet_corners.h"
 #include "libquadmesh/cones/protrusion_caps.h"
 #include "libquadmesh/cones/smooth_cross_field.h"
 #include "libquadmesh/core/error.h"
@@ -434,7 +435,8 @@ template <class Settle>
 void add_cone_pairs(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const ConeMetricSolver& solver,
                     const std::vector<double>& curvature, const std::vector<double>& area,
                     const std::vector<char>& eligible, double spacing, double boundary_room, double size,
-                    const Settle& settle, const ConePlacementOptions& options, int room, std::vector<Cone>& cones) {
+                    const Settle& settle, const ConePlacementOptions& options, int room, std::vector<char> pinned,
+                    std::vector<Cone>& cones) {
   auto measure = [&](const std::vector<Cone>& set, Eigen::VectorXd& u) {
     u = solver.solve(target_curvature(adjacency, quads_per_vertex(adjacency, set)), curvature);
     std::vector<char> mark(area.size(), 0);
@@ -476,7 +478,6 @@ void add_cone_pairs(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
   };
   Eigen::VectorXd u;
   MetricBand band = measure(cones, u);
-  std::vector<char> pinned(area.size(), 0);
   while (room >= 2) {
     if (band.share >= options.pair_band_goal && band.largest <= options.pair_largest) return;
     const std::vector<char> free = free_vertices(cones);
@@ -554,6 +555,37 @@ std::vector<char> farther_than(const std::vector<double>& distance, double least
   return out;
 }
 
+/// The interior cones of ConePlacementOptions::fillet_cones: per fillet corner
+/// (fillet_corners.h) at quads of edge `size`, valence 3 (convex) or 5 (concave)
+/// at the vertex nearest the middle of its arc among those `eligible` and not
+/// `taken`, each marking the vertices within `spacing` taken and itself `pinned`.
+/// Adds them to `cones`; returns the quarter turns they carry.
+int place_fillet_cones(const TriangleSoup& soup, double size, const std::vector<char>& eligible, double spacing,
+                       std::vector<char>& taken, std::vector<char>& pinned, std::vector<Cone>& cones) {
+  int carried = 0;
+  for (const BoundaryCorner& fillet : fillet_corners(soup, size)) {
+    const Vec3& at = soup.points[static_cast<std::size_t>(fillet.vertex)];
+    int nearest = -1;
+    double nearest_distance = 0;
+    for (std::size_t v = 0; v < soup.points.size(); ++v) {
+      if (!eligible[v] || taken[v]) continue;
+      const double d = (soup.points[v] - at).squaredNorm();
+      if (nearest < 0 || d < nearest_distance) {
+        nearest = static_cast<int>(v);
+        nearest_distance = d;
+      }
+    }
+    if (nearest < 0) continue;  // no room: the greedy placement takes its turn
+    const int turn = fillet.angle_deg < 180 ? 1 : -1;
+    cones.push_back({nearest, 4 - turn});
+    pinned[static_cast<std::size_t>(nearest)] = 1;
+    taken[static_cast<std::size_t>(nearest)] = 1;
+    mark_within(soup.points, soup.points[static_cast<std::size_t>(nearest)], spacing, 1, taken);
+    carried += turn;
+  }
+  return carried;
+}
+
 /// The cones' curvature, and `deficit` quarter turns more spread over the
 /// interior by area.
 std::vector<double> spread_targets(const SurfaceAdjacency& adjacency, const std::vector<int>& quads,
@@ -611,7 +643,6 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
   double interior_area = 0;
   for (std::size_t v = 0; v < area.size(); ++v)
     if (!adjacency.boundary_vertex[v]) interior_area += area[v];
-  const int step = deficit > 0 ? 1 : -1;  // valence 3 (+1 quarter turn) or 5 (-1)
   // with boundary_cones, a boundary vertex may take a cone where no eligible
   // vertex is this near it along the edges
   const auto boundary_room = [&] { return (boundary_distance + 1) * size; };
@@ -645,6 +676,19 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
     cones.insert(cones.end(), singular.begin(), singular.end());
     deficit = 0;
   }
+  // the fillets' cones first, kept where they are (`pinned`)
+  std::vector<char> pinned(soup.points.size(), 0);
+  if (greedy && options.fillet_cones) {
+    const int before = static_cast<int>(cones.size());
+    deficit -= place_fillet_cones(soup, size, eligible, spacing, taken, pinned, cones);
+    const int fillets = static_cast<int>(cones.size()) - before;
+    if (fillets + std::abs(deficit) > allowed)
+      throw Error(ErrorCode::unsupported,
+                  fmt::format("the {} fillets' cones and the {} quarter turns the corners leave after them are more "
+                              "than the {:.0f} interior cones allowed",
+                              fillets, std::abs(deficit), allowed));
+  }
+  const int step = deficit > 0 ? 1 : -1;  // valence 3 (+1 quarter turn) or 5 (-1)
   while (deficit != 0) {
     // the cones so far, the rest spread over the interior by area
     const std::vector<int> quads = quads_per_vertex(adjacency, cones);
@@ -745,11 +789,11 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
                              options.cone_separation, closest, set);
     }
   };
-  settle(cones, std::vector<char>(soup.points.size(), 0));
+  settle(cones, pinned);
   if (greedy && options.pair_band_goal > 0) {
     const int interior = static_cast<int>(cones.size() - corner_count);
     add_cone_pairs(soup, adjacency, solver, curvature, area, eligible, spacing, boundary_room(), size, settle, options,
-                   static_cast<int>(allowed) - interior, cones);
+                   static_cast<int>(allowed) - interior, pinned, cones);
   }
   if (options.min_metric_band > 0 || options.max_metric_largest > 0) {
     std::vector<char> placed(area.size(), 0);

@@ -3,6 +3,7 @@
 #include "libquadmesh/cones/boundary_spikes.h"
 #include "libquadmesh/cones/cone_map.h"
 #include "libquadmesh/cones/cone_placement.h"
+#include "libquadmesh/cones/fillet_corners.h"
 #include "libquadmesh/cones/wide_corners.h"
 #include "libquadmesh/param/internal/surface_adjacency.h"
 #include "libquadmesh/core/error.h"
@@ -68,6 +69,16 @@ std::vector<ConePlacementOptions> capped_placements() {
     capped.min_metric_band = capped_min_metric_band;
     capped.max_metric_largest = capped_max_metric_largest;
     out.push_back(capped);
+  }
+  return out;
+}
+
+std::vector<ConePlacementOptions> fillet_placements() {
+  std::vector<ConePlacementOptions> out;
+  for (ConePlacementOptions with_fillets : cone_placements()) {
+    if (!(with_fillets.pair_band_goal > 0)) continue;
+    with_fillets.fillet_cones = true;
+    out.push_back(with_fillets);
   }
   return out;
 }
@@ -390,18 +401,26 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
   // whether some placement's quads were sound, and whether one of those had
   // size_band_goal of them in the size band
   bool some_sound = false, sound_share_in_band = false;
-  bool fallbacks_added = false, capped_added = false;
+  bool fallbacks_added = false, capped_added = false, fillets_added = false, protrusion = false;
   for (std::size_t start = 0; attempts_left > 0 && !found;) {
     if (start >= placements.size()) {
-      if (interior != InteriorCones::greedy || capped_added) break;
+      if (interior != InteriorCones::greedy || fillets_added) break;
       std::vector<ConePlacementOptions> more;
-      if (!fallbacks_added && !sound_share_in_band) {
+      if (!fallbacks_added && !sound_share_in_band && !capped_added) {
         fallbacks_added = true;
         more = fallback_placements(some_sound);
-      } else {
-        // the protrusions' caps last: their cones move what the others settle
+      } else if (!capped_added) {
+        // the protrusions' caps after those: their cones move what the others settle
         capped_added = true;
         more = capped_placements();
+      } else {
+        // the fillets' cones last, where the part has fillets and no protrusion
+        // lacks its caps' cones (the fillet placements have no caps)
+        fillets_added = true;
+        if (!protrusion &&
+            !fillet_corners(setup.soup, setup.preamble.size_requested * lattice_factor).empty())
+          more = fillet_placements();
+        if (more.empty()) break;
       }
       for (ConePlacementOptions& p : more) {
         p.rounding = rounding;
@@ -433,6 +452,7 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
       }
       if (!error.empty()) {
         if (failure.empty()) failure = error;
+        protrusion = protrusion || attempt.uncapped_protrusion;
         if (attempt.uncapped_protrusion && interior == InteriorCones::greedy && !capped_added) {
           // a protrusion's cap that lacks its cones lacks them in every placement
           // without the caps: the capped ones next, the others dropped (those made
@@ -511,9 +531,9 @@ ConeCandidate cone_candidate(const FormSetup& form_setup, const QuadMeshOptions&
                              Stages& stages) {
   const FormSetup setup = turned_boundary_setup(form_setup);
   std::string failure;
-  // every placement, the fallbacks and the capped ones
-  int every_placement =
-      static_cast<int>(cone_placements(InteriorCones::greedy, has_handles(input)).size() + 2 + capped_placements().size());
+  // every placement, the fallbacks, the capped ones and those with the fillets' cones
+  int every_placement = static_cast<int>(cone_placements(InteriorCones::greedy, has_handles(input)).size() + 2 +
+                                         capped_placements().size() + fillet_placements().size());
   bool mapped = false;
   std::optional<ConeCandidate> cones = first_acceptable_placement(setup, options, input, stages, 1.0, every_placement,
                                                                   failure, RoundingOrder::cones_first, &mapped);
