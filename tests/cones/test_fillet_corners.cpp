@@ -63,3 +63,33 @@ TEST_CASE("a plate with sharp corners and round holes has no fillet corner") {
   const TriangleSoup plate = example_surface("plate-two-holes.geo", 0.015);
   CHECK(fillet_corners(plate, 0.015 * std::hypot(100.0, 60.0)).empty());
 }
+
+TEST_CASE(
+    "an L-plate's concave inner fillet is a fillet corner of about 270 degrees; its sharp corners "
+    "block none") {
+  // arms 40 wide, 120 and 100 long, the inner corner rounded to 6 (2.6 quads at
+  // 1.5% of the diagonal), the outer corners sharp
+  const std::string geo = R"(SetFactory("OpenCASCADE");
+Rectangle(1) = {0, 0, 0, 120, 40};
+Rectangle(2) = {0, 0, 0, 40, 100};
+Rectangle(3) = {40, 40, 0, 6, 6};
+Disk(4) = {46, 46, 0, 6, 6};
+BooleanDifference(5) = { Surface{3}; Delete; }{ Surface{4}; Delete; };
+BooleanUnion(6) = { Surface{1}; Delete; }{ Surface{2, 5}; Delete; };
+)";
+  io::ReadOptions read;
+  read.quad_size_relative = 0.015;
+  const std::string path =
+      test::write_text(test::scratch_dir("fillet_corners_l_plate"), "l.geo", geo);
+  const TriangleSoup plate = analyze_topology(io::read_surface(path, read).soup).soup;
+  const double size = 0.015 * std::hypot(120.0, 100.0);
+  CHECK(boundary_corners(plate, corner_window_quads * size).size() == 5);  // the outer corners
+  const std::vector<BoundaryCorner> fillets = fillet_corners(plate, size);
+  REQUIRE(fillets.size() == 1);
+  CHECK(fillets[0].angle_deg > 260);
+  CHECK(fillets[0].angle_deg < 280);
+  // on the arc's middle: 6 from its centre (46, 46), on the diagonal
+  const Vec3& p = plate.points[static_cast<std::size_t>(fillets[0].vertex)];
+  CHECK((p - Vec3(46, 46, 0)).norm() == doctest::Approx(6).epsilon(0.01));
+  CHECK(std::abs(p.x() - p.y()) < 1.5);
+}
