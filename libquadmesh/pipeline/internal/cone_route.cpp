@@ -370,9 +370,9 @@ void judge_as_written(ConeCandidate& cones, const QuadMeshOptions& options, doub
 
 /// The first placement of cone_placements() (then fallback_placements(), when none
 /// gave sound quads with size_band_goal of them in the size band, then, greedy,
-/// capped_placements()) whose quads at
-/// `lattice_factor` are
-/// acceptable: sound, size_band_goal of them in the size band and none above
+/// capped_placements(), at once after a placement refused as an
+/// UncappedProtrusion, then fillet_placements() where the part has fillet corners
+/// and no protrusion) whose quads at `lattice_factor` are acceptable: sound, size_band_goal of them in the size band and none above
 /// max_size_ratio x the size, every corner in its
 /// quad count, and within the acceptance's distance of S as judged
 /// (judge_as_written); each placement one of `attempts_left` (counted down, a
