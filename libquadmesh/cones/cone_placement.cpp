@@ -555,15 +555,16 @@ std::vector<char> farther_than(const std::vector<double>& distance, double least
   return out;
 }
 
-/// The interior cones of ConePlacementOptions::fillet_cones: per fillet corner
-/// (fillet_corners.h) at quads of edge `size`, valence 3 (convex) or 5 (concave)
-/// at the vertex nearest the middle of its arc among those `eligible` and not
-/// `taken`, each marking the vertices within `spacing` taken and itself `pinned`.
-/// Adds them to `cones`; returns the quarter turns they carry.
+/// The interior cones of ConePlacementOptions::fillet_cones: per convex fillet
+/// corner (fillet_corners.h) at quads of edge `size`, a valence-3 cone at the
+/// vertex nearest the middle of its arc among those `eligible` and not `taken`,
+/// each marking the vertices within `spacing` taken and itself `pinned`. Adds them
+/// to `cones`; returns the quarter turns they carry.
 int place_fillet_cones(const TriangleSoup& soup, double size, const std::vector<char>& eligible, double spacing,
                        std::vector<char>& taken, std::vector<char>& pinned, std::vector<Cone>& cones) {
   int carried = 0;
   for (const BoundaryCorner& fillet : fillet_corners(soup, size)) {
+    if (!convex_fillet(fillet)) continue;
     const Vec3& at = soup.points[static_cast<std::size_t>(fillet.vertex)];
     int nearest = -1;
     double nearest_distance = 0;
@@ -576,12 +577,11 @@ int place_fillet_cones(const TriangleSoup& soup, double size, const std::vector<
       }
     }
     if (nearest < 0) continue;  // no room: the greedy placement takes its turn
-    const int turn = fillet.angle_deg < 180 ? 1 : -1;
-    cones.push_back({nearest, 4 - turn});
+    cones.push_back({nearest, 3});
     pinned[static_cast<std::size_t>(nearest)] = 1;
     taken[static_cast<std::size_t>(nearest)] = 1;
     mark_within(soup.points, soup.points[static_cast<std::size_t>(nearest)], spacing, 1, taken);
-    carried += turn;
+    ++carried;
   }
   return carried;
 }

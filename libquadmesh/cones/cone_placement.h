@@ -103,11 +103,14 @@ struct ConePlacementOptions {
   /// other cones settle: one pair at a time, the settling moved each cap cone out
   /// again (pig's ears, bunny-open's).
   bool protrusion_caps = false;
-  /// A rounded corner a few quads in radius, which is no corner at the quad scale
-  /// (fillet_corners.h), gets its quarter turn from an interior cone beside it:
-  /// valence 3 at a convex fillet, valence 5 at a concave one, at the vertex that
-  /// may take a cone nearest the middle of its arc, placed before the greedy ones
-  /// and kept there while the others settle.
+  /// A convex rounded corner a few quads in radius, which is no corner at the
+  /// quad scale (fillet_corners.h), gets its quarter turn from a valence-3 cone
+  /// beside it, at the vertex that may take a cone nearest the middle of its arc,
+  /// placed before the greedy ones and kept there while the others settle. A
+  /// concave fillet gets none: the quads round it grow away from the arc as a
+  /// polar grid's do, which the metric gives without a cone (a valence-5 cone
+  /// beside each of the U-channel plate's two concave fillets took its metric
+  /// from 90% of the area in the band to 13%).
   bool fillet_cones = false;
   /// A placement whose metric leaves less than this share of the area with its
   /// quad size within [0.5, 2] x the size is refused (qm::Error, unsupported)

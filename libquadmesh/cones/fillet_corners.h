@@ -2,7 +2,7 @@
 // with fillets of a few quads' radius, a bracket's inner radius. At the quad scale
 // (boundary_corners.h, half a quad each way) such an arc turns too little at any
 // one vertex to be a corner, so the cone metric must take its quarter turn
-// inside, from a valence-3 (convex) or valence-5 (concave) cone near it. The
+// inside, from a valence-3 cone near a convex one. The
 // greedy placement puts cones of one sign only (the slotted plate's: valence 5,
 // round its slot and holes), and a pair added at a time shifts the conformal
 // factor across the whole part (a valence-5 cone by the slot and a valence-3 one
@@ -41,5 +41,8 @@ constexpr double fillet_flank_deg = 20.0;
 /// corner at the quad scale or within the window of one; sorted by vertex.
 /// Precondition: `surface` is a manifold triangle surface.
 std::vector<BoundaryCorner> fillet_corners(const TriangleSoup& surface, double size);
+
+/// Whether a fillet corner is convex (its interior angle below 180 degrees).
+inline bool convex_fillet(const BoundaryCorner& fillet) { return fillet.angle_deg < 180; }
 
 }  // namespace qm

@@ -371,10 +371,11 @@ void judge_as_written(ConeCandidate& cones, const QuadMeshOptions& options, doub
 /// The first placement of cone_placements() (then fallback_placements(), when none
 /// gave sound quads with size_band_goal of them in the size band, then, greedy,
 /// capped_placements(), at once after a placement refused as an
-/// UncappedProtrusion, then fillet_placements() where the part has fillet corners
-/// and no protrusion) whose quads at `lattice_factor` are acceptable: sound, size_band_goal of them in the size band and none above
-/// max_size_ratio x the size, every corner in its
-/// quad count, and within the acceptance's distance of S as judged
+/// UncappedProtrusion, then fillet_placements() where the part has convex fillet
+/// corners and no protrusion) whose quads at `lattice_factor` are acceptable:
+/// sound, size_band_goal of them in the size band and none above max_size_ratio x
+/// the size, every corner in its quad count, and within the acceptance's distance
+/// of S as judged
 /// (judge_as_written); each placement one of `attempts_left` (counted down, a
 /// thrown one too). The first sound one may miss the band or a corner where a later
 /// one does not (fertility, its handles steered: the first sound placement has 85%
@@ -414,12 +415,12 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
         capped_added = true;
         more = capped_placements();
       } else {
-        // the fillets' cones last, where the part has fillets and no protrusion
-        // lacks its caps' cones (the fillet placements have no caps)
+        // the fillets' cones last, where the part has convex fillets and no
+        // protrusion lacks its caps' cones (the fillet placements have no caps)
         fillets_added = true;
-        if (!protrusion &&
-            !fillet_corners(setup.soup, setup.preamble.size_requested * lattice_factor).empty())
-          more = fillet_placements();
+        const std::vector<BoundaryCorner> fillets =
+            fillet_corners(setup.soup, setup.preamble.size_requested * lattice_factor);
+        if (!protrusion && std::any_of(fillets.begin(), fillets.end(), convex_fillet)) more = fillet_placements();
         if (more.empty()) break;
       }
       for (ConePlacementOptions& p : more) {
