@@ -806,11 +806,10 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
                                : band.largest;
     if (band.share < options.min_metric_band ||
         (options.max_metric_largest > 0 && largest > options.max_metric_largest)) {
-      const std::string refusal = fmt::format(
-          "the {} cones leave {:.0f}% of the area with quads within [0.5, 2] x the size (up to "
-          "{:.0f} x): "
-          "not mapped",
-          cones.size(), 100 * band.share, largest);
+      const std::string refusal =
+          fmt::format("the {} cones leave {:.0f}% of the area with quads within [0.5, 2] x the size (up to {:.0f} x): "
+                      "not mapped",
+                      cones.size(), 100 * band.share, largest);
       if (!options.protrusion_caps && greedy &&
           uncapped_protrusion(soup, adjacency, curvature, u, band, placed, options, cones))
         throw UncappedProtrusion(ErrorCode::unsupported,

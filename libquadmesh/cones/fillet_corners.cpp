@@ -14,9 +14,10 @@ namespace {
 constexpr double fillet_min_turn_deg = 60.0;
 constexpr double fillet_max_turn_deg = 120.0;
 
-/// The boundary's turning (radians, positive where the surface is convex) at the
-/// vertices of `loop` whose distance along it from vertex i lies in (from, to]
-/// (negative: before i), and the vertices' positions along the loop.
+/// A boundary loop's edge lengths and perimeter, and `between`: the boundary's
+/// turning (radians, positive where the surface is convex) at the vertices of
+/// `loop` whose distance along it from vertex i lies in (from, to] (negative:
+/// before i).
 struct LoopTurning {
   const std::vector<int>& loop;
   const std::vector<double>& curvature;  ///< per vertex of the surface

@@ -61,25 +61,32 @@ ConePlacementOptions boundary_cone_placement() {
   return on_boundary;
 }
 
+namespace {
+
+/// The placements of cone_placements() (without handles) that add pairs: those
+/// the capped and the fillet placements vary (the caps are a step of the pairs).
+std::vector<ConePlacementOptions> pairing_placements() {
+  std::vector<ConePlacementOptions> out = cone_placements();
+  const auto no_pairs = [](const ConePlacementOptions& p) { return !(p.pair_band_goal > 0); };
+  out.erase(std::remove_if(out.begin(), out.end(), no_pairs), out.end());
+  return out;
+}
+
+}  // namespace
+
 std::vector<ConePlacementOptions> capped_placements() {
-  std::vector<ConePlacementOptions> out;
-  for (ConePlacementOptions capped : cone_placements()) {
-    if (!(capped.pair_band_goal > 0)) continue;  // the caps are a step of the pairs
+  std::vector<ConePlacementOptions> out = pairing_placements();
+  for (ConePlacementOptions& capped : out) {
     capped.protrusion_caps = true;
     capped.min_metric_band = capped_min_metric_band;
     capped.max_metric_largest = capped_max_metric_largest;
-    out.push_back(capped);
   }
   return out;
 }
 
 std::vector<ConePlacementOptions> fillet_placements() {
-  std::vector<ConePlacementOptions> out;
-  for (ConePlacementOptions with_fillets : cone_placements()) {
-    if (!(with_fillets.pair_band_goal > 0)) continue;
-    with_fillets.fillet_cones = true;
-    out.push_back(with_fillets);
-  }
+  std::vector<ConePlacementOptions> out = pairing_placements();
+  for (ConePlacementOptions& with_fillets : out) with_fillets.fillet_cones = true;
   return out;
 }
 

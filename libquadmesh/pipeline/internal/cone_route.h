@@ -101,10 +101,10 @@ std::vector<ConePlacementOptions> capped_placements();
 /// convex fillet corners at the size (fillet_corners.h) and no placement was
 /// refused as an UncappedProtrusion: those of cone_placements() (without handles)
 /// that add pairs, with fillet_cones (a valence-3 cone beside each convex fillet,
-/// kept there). A
-/// plate with four rounded corners 2.9 quads in radius, a slot and two holes: the
-/// plain placements' quads reach 4.7 x the size at the fillets (88% in the band,
-/// the Abel quads 89%, 3.4 x); with the fillets' valence-3 cones, 97% and 2.6 x.
+/// kept there). A plate with four rounded corners 2.9 quads in radius, a slot and
+/// two holes: the plain placements' quads reach 4.7 x the size at the fillets (88%
+/// in the band, the Abel quads 89%, 3.4 x); with the fillets' valence-3 cones, 97%
+/// and 2.6 x.
 std::vector<ConePlacementOptions> fillet_placements();
 
 /// A placement tried after cone_placements() (greedy; fallback_placements) when
