@@ -1,6 +1,7 @@
 #include "libquadmesh/cones/cone_map.h"
 
 #include "libquadmesh/cones/cone_metric.h"
+#include "libquadmesh/cones/cone_winding.h"
 #include "libquadmesh/core/error.h"
 
 #include <cmath>
@@ -54,6 +55,7 @@ ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, co
     if (!adjacency.boundary_vertex[v] && out.quads[v] != 4)
       scale[static_cast<Eigen::Index>(v)] = ring_mean(soup, adjacency, out.u, v);
   out.map = seamless_map(soup, adjacency, scale, out.field, out.cut, out.quads, size, out.report, order);
+  if (out.report.inverted_triangles > 0) out.misturned = misturned_cones(soup, adjacency, out.map, out.quads);
   return out;
 }
 

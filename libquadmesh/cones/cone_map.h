@@ -17,6 +17,9 @@ struct ConeMap {
   CrossField field;
   CutGraph cut;
   SeamlessMapReport report;
+  /// the interior cones the map winds round to another angle than their quads
+  /// (cone_winding.h): where it folds, these have to move
+  std::vector<int> misturned;
 };
 
 /// `size` the target quad edge (> 0); `order` the quantization's (seamless_map.h).

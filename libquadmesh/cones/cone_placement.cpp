@@ -638,7 +638,15 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
                             100 * options.max_interior_cone_share));
   const std::vector<double> distance = distance_to_boundary(soup, adjacency);
   double boundary_distance = options.boundary_distance;
-  std::vector<char> eligible = farther_than(distance, boundary_distance * size);
+  // the vertices that may take an interior cone: this far from the boundary, and
+  // not where the placement is asked to avoid
+  const auto eligible_beyond = [&](double from_boundary) {
+    std::vector<char> out = farther_than(distance, from_boundary);
+    for (const Vec3& avoided : options.avoided_points)
+      mark_within(soup.points, avoided, options.avoided_radius * size, 0, out);
+    return out;
+  };
+  std::vector<char> eligible = eligible_beyond(boundary_distance * size);
   const ConeMetricSolver solver(soup, adjacency);
   double interior_area = 0;
   for (std::size_t v = 0; v < area.size(); ++v)
@@ -733,7 +741,7 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
       boundary_distance = options.narrow_boundary_distance;
       cone_spacing = std::min(cone_spacing, options.narrow_cone_spacing);
       spacing = cone_spacing * size;
-      eligible = farther_than(distance, boundary_distance * size);
+      eligible = eligible_beyond(boundary_distance * size);
       std::fill(taken.begin(), taken.end(), 0);
       for (std::size_t c = corners_only; c < cones.size(); ++c)
         mark_within(soup.points, soup.points[static_cast<std::size_t>(cones[c].vertex)], spacing, 1, taken);
@@ -775,17 +783,17 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
   // `pinned` vertices (a protrusion's cap) stay; none comes nearer another than
   // the narrow parts' spacing
   const double closest = options.narrow_cone_spacing * size;
-  const auto settle = [&](std::vector<Cone>& set, const std::vector<char>& pinned) {
+  const auto settle = [&](std::vector<Cone>& set, const std::vector<char>& held) {
     if (set.size() == corner_count) return;
     if (steered)
-      align_loops_by_cones(soup, adjacency, model, curvature, eligible, pinned, options.alignment_rings,
+      align_loops_by_cones(soup, adjacency, model, curvature, eligible, held, options.alignment_rings,
                            options.cone_separation, closest, set);
     if (greedy && options.size_relaxation_passes > 0) {
-      relax_cones_for_size(soup, adjacency, solver, model, curvature, area, eligible, pinned,
+      relax_cones_for_size(soup, adjacency, solver, model, curvature, area, eligible, held,
                            options.cone_separation, closest, options.size_relaxation_passes,
                            options.relaxation_alignment_slack, set);
       if (steered)
-        align_loops_by_cones(soup, adjacency, model, curvature, eligible, pinned, options.alignment_rings,
+        align_loops_by_cones(soup, adjacency, model, curvature, eligible, held, options.alignment_rings,
                              options.cone_separation, closest, set);
     }
   };

@@ -128,6 +128,14 @@ struct ConePlacementOptions {
   /// ...keeping the loops' turns within this (radians, summed) of whole quarter
   /// turns, or no worse than they were.
   double relaxation_alignment_slack = 0.02;
+  /// No interior cone within avoided_radius quads of these points (3D): where an
+  /// earlier map of the same placement wound round a cone a turn short
+  /// (cone_winding.h), so that the cone goes elsewhere.
+  std::vector<Vec3> avoided_points;
+  double avoided_radius = 0.75;
+  /// Not the placement's own: where its map folds round cones it winds round a
+  /// turn short, the route places it again with those avoided (at most twice).
+  bool place_again_where_folded = false;
   /// Not the placement's own: the order the seamless map of these cones rounds its
   /// values in (seamless_map.h), so that a route can try the placements again in
   /// the other order.

@@ -367,6 +367,30 @@ TEST_CASE("placed cones on a plate with two holes: one quad per corner, eight va
   check_cone_quads(q, cones);
 }
 
+TEST_CASE("a placement asked to avoid a cone's place puts no interior cone near it, and as many elsewhere" *
+          doctest::test_suite("slow")) {
+  const TriangleSoup soup = example_at("plate-two-holes.geo", 1.75);
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  const std::vector<Cone> cones = place_cones(soup, adjacency, 1.75);
+  std::vector<Vec3> interior;
+  for (const Cone& c : cones)
+    if (!adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)])
+      interior.push_back(soup.points[static_cast<std::size_t>(c.vertex)]);
+  REQUIRE(interior.size() == 8);
+  ConePlacementOptions elsewhere;
+  elsewhere.avoided_points = {interior.front(), interior.back()};
+  const std::vector<Cone> again = place_cones(soup, adjacency, 1.75, elsewhere);
+  int moved_interior = 0;
+  for (const Cone& c : again) {
+    if (adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)]) continue;
+    ++moved_interior;
+    for (const Vec3& avoided : elsewhere.avoided_points)
+      CHECK((soup.points[static_cast<std::size_t>(c.vertex)] - avoided).norm() >= elsewhere.avoided_radius * 1.75);
+  }
+  CHECK(moved_interior == 8);
+  CHECK(again.size() == cones.size());
+}
+
 TEST_CASE("the cross-field placement on a plate with two holes: the field's singularities carry the -8 quarter turns, "
           "complete quads" * doctest::test_suite("slow")) {
   const TriangleSoup soup = example_at("plate-two-holes.geo", 1.75);

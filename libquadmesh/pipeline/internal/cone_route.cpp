@@ -76,10 +76,15 @@ std::vector<ConePlacementOptions> pairing_placements() {
 
 std::vector<ConePlacementOptions> capped_placements() {
   std::vector<ConePlacementOptions> out = pairing_placements();
+  ConePlacementOptions nearer = out.front();
+  nearer.boundary_distance = nearer.narrow_boundary_distance;
+  nearer.cone_spacing = nearer.narrow_cone_spacing;
+  out.insert(out.begin(), nearer);
   for (ConePlacementOptions& capped : out) {
     capped.protrusion_caps = true;
     capped.min_metric_band = capped_min_metric_band;
     capped.max_metric_largest = capped_max_metric_largest;
+    capped.place_again_where_folded = true;
   }
   return out;
 }
@@ -127,9 +132,11 @@ bool placed_before(const std::vector<Cone>& cones, const std::vector<std::vector
 
 constexpr const char* placed_before_error = "the same cones as a placement tried before";
 
-/// The quads of `cones` (cone_attempt after the placement).
+/// The quads of `cones` (cone_attempt after the placement); `misturned`, if
+/// given, gets the interior cones a folded map winds round a turn short
+/// (cone_winding.h).
 Candidate cone_quads(const FormSetup& setup, std::vector<Cone> cones, Stages& stages, double lattice_factor,
-                     bool smooth_inverted, RoundingOrder order) {
+                     bool smooth_inverted, RoundingOrder order, std::vector<int>* misturned = nullptr) {
   QuadMeshResult r = setup.preamble;
   // the corners the cone metric would open to a fold are bisected first
   TriangleSoup soup = setup.soup;
@@ -145,6 +152,7 @@ Candidate cone_quads(const FormSetup& setup, std::vector<Cone> cones, Stages& st
   const ConeMap map = cone_map(soup, adjacency, r.cones, size, order);
   if (order == RoundingOrder::translations_first) r.rounding_order = "translations_first";
   r.cone_map = map.report;
+  if (misturned) *misturned = map.misturned;
   stages.next("extraction", "extracting the quads across the rotated cuts");
   r.quads = extract_lattice_quads(soup, adjacency, map.map, r.extraction);
   compact(r.quads);
@@ -172,8 +180,29 @@ Candidate cone_quads(const FormSetup& setup, std::vector<Cone> cones, Stages& st
   return c;
 }
 
+/// The largest quad size (x the requested size) the acceptance allows (issue 18).
+constexpr double max_size_ratio = 3.0;
+
+SizeBand size_band(const QuadMeshResult& r) {
+  if (r.quads.quads.empty() || !(r.size_requested > 0)) return {};
+  return quad_size_band(polygon_mesh(r.quads), r.size_requested);
+}
+
+/// A placement is made again this many times at most, each time away from the
+/// cones its last map folded round (misturned: cone_winding.h), and only when its
+/// quads, folded, have size_band_goal of them in the size band and none above
+/// max_size_ratio: what only the folds keep from being acceptable (a placement made
+/// again moves a cone or two, not the sizes: each time costs a placement and a map).
+constexpr int max_placements_elsewhere = 2;
+
 /// One placement's attempt reported on `stages`; with `placed`, cones placed before
-/// are not mapped again (the caller's check refuses them).
+/// are not mapped again (the caller's check refuses them). Where the map folds and
+/// winds round some interior cones a turn short, a capped placement
+/// (ConePlacementOptions::place_again_where_folded) is made again with
+/// those cones' places avoided (ConePlacementOptions::avoided_points), and the
+/// map with the fewest folds kept (bunny-open's capped cones 1.5
+/// quads from the boundary: 7 folded triangles round one valence-5 cone; placed
+/// again, 94% of the quads in the size band and nothing folded).
 ConeAttempt run_attempt(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages,
                         double lattice_factor, bool smooth_inverted,
                         const std::vector<std::vector<Cone>>* placed = nullptr) {
@@ -181,7 +210,36 @@ ConeAttempt run_attempt(const FormSetup& setup, const ConePlacementOptions& plac
   try {
     attempt.cones = placed_cones(setup, placement, stages, lattice_factor);
     if (placed && placed_before(*attempt.cones, *placed)) return attempt;
-    attempt.candidate = cone_quads(setup, *attempt.cones, stages, lattice_factor, smooth_inverted, placement.rounding);
+    std::vector<int> misturned;
+    attempt.candidate = cone_quads(setup, *attempt.cones, stages, lattice_factor, smooth_inverted, placement.rounding,
+                                   &misturned);
+    ConePlacementOptions elsewhere = placement;
+    const auto sized = [](const Candidate& c) {
+      const SizeBand band = size_band(c.result);
+      return band.share_in_band >= size_band_goal && band.max_ratio <= max_size_ratio;
+    };
+    for (int again = 0; placement.place_again_where_folded && again < max_placements_elsewhere &&
+                        attempt.candidate->quality.folds_left > 0 && !misturned.empty() && sized(*attempt.candidate);
+         ++again) {
+      for (int c : misturned)
+        if (static_cast<std::size_t>(c) < setup.soup.points.size())
+          elsewhere.avoided_points.push_back(setup.soup.points[static_cast<std::size_t>(c)]);
+      stages.announce(fmt::format("the map folds round {} cone{} it winds round a turn short: the cones placed again "
+                                  "away from there",
+                                  misturned.size(), misturned.size() == 1 ? "" : "s"));
+      try {
+        std::vector<Cone> cones = placed_cones(setup, elsewhere, stages, lattice_factor);
+        if (placed && placed_before(cones, *placed)) break;
+        Candidate candidate =
+            cone_quads(setup, cones, stages, lattice_factor, smooth_inverted, placement.rounding, &misturned);
+        if (candidate.quality.folds_left < attempt.candidate->quality.folds_left) {
+          attempt.cones = std::move(cones);
+          attempt.candidate = std::move(candidate);
+        }
+      } catch (const Error&) {
+        break;  // no placement there: the folded map stands
+      }
+    }
   } catch (const UncappedProtrusion& e) {
     attempt.error = e.what();
     attempt.uncapped_protrusion = true;
@@ -289,18 +347,12 @@ double relative_hausdorff(const QuadMeshResult& r) {
   return quad_distance(polygon_mesh(r.quads), r.surface).distance.value() / diagonal;
 }
 
-SizeBand size_band(const QuadMeshResult& r) {
-  if (r.quads.quads.empty() || !(r.size_requested > 0)) return {};
-  return quad_size_band(polygon_mesh(r.quads), r.size_requested);
-}
-
 }  // namespace
 
 namespace {
 
-/// The largest quad size (x the requested size) the acceptance allows (issue 18),
-/// and the lattices tried, finer by these factors, when a sound result exceeds it.
-constexpr double max_size_ratio = 3.0;
+/// The lattices tried, finer by these factors, when a sound result has quads
+/// above max_size_ratio.
 constexpr double finer_lattices[] = {0.95, 0.9};
 constexpr int max_finer_attempts = 6;
 constexpr double finer_lattice_below = 1.1;
