@@ -188,6 +188,12 @@ SizeBand size_band(const QuadMeshResult& r) {
   return quad_size_band(polygon_mesh(r.quads), r.size_requested);
 }
 
+/// Whether quads of this size band meet the acceptance's: size_band_goal of them
+/// in the band and none above max_size_ratio.
+bool in_size_band(const SizeBand& band) {
+  return band.share_in_band >= size_band_goal && band.max_ratio <= max_size_ratio;
+}
+
 /// A placement is made again this many times at most, each time away from the
 /// cones its last map folded round (misturned: cone_winding.h), and only when its
 /// quads, folded, have size_band_goal of them in the size band and none above
@@ -214,12 +220,9 @@ ConeAttempt run_attempt(const FormSetup& setup, const ConePlacementOptions& plac
     attempt.candidate = cone_quads(setup, *attempt.cones, stages, lattice_factor, smooth_inverted, placement.rounding,
                                    &misturned);
     ConePlacementOptions elsewhere = placement;
-    const auto sized = [](const Candidate& c) {
-      const SizeBand band = size_band(c.result);
-      return band.share_in_band >= size_band_goal && band.max_ratio <= max_size_ratio;
-    };
     for (int again = 0; placement.place_again_where_folded && again < max_placements_elsewhere &&
-                        attempt.candidate->quality.folds_left > 0 && !misturned.empty() && sized(*attempt.candidate);
+                        attempt.candidate->quality.folds_left > 0 && !misturned.empty() &&
+                        in_size_band(size_band(attempt.candidate->result));
          ++again) {
       for (int c : misturned)
         if (static_cast<std::size_t>(c) < setup.soup.points.size())
@@ -531,14 +534,11 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
       last->candidate = std::move(*attempt.candidate);
       last->band = size_band(last->candidate.result);
       if (!sound(last->candidate.quality, input, options.acceptance)) continue;
-      const auto in_band = [&](const SizeBand& band) {
-        return band.share_in_band >= size_band_goal && band.max_ratio <= max_size_ratio;
-      };
       some_sound = true;
       sound_share_in_band = sound_share_in_band || last->band.share_in_band >= size_band_goal;
-      if (in_band(last->band) && corner_mismatches(last->candidate.result) == 0) {
+      if (in_size_band(last->band) && corner_mismatches(last->candidate.result) == 0) {
         judge_as_written(*last, options, setup.diagonal, input, stages);
-        found = sound(last->candidate.quality, input, options.acceptance) && in_band(last->band) &&
+        found = sound(last->candidate.quality, input, options.acceptance) && in_size_band(last->band) &&
                 last->distance <= options.acceptance.max_hausdorff_relative;
         if (found) break;
       }

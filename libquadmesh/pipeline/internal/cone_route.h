@@ -89,12 +89,13 @@ std::vector<ConePlacementOptions> cone_placements(InteriorCones interior = Inter
 
 /// Tried after cone_placements() and fallback_placements() (greedy) when none was
 /// acceptable: those of cone_placements() (without handles) that add pairs, the
-/// first, wider and widest ones, with protrusion_caps (a
-/// protrusion's cap cones placed together and kept there: pig's ears), refused
-/// before their maps when their metric leaves the sizes off
-/// (capped_min_metric_band, capped_max_metric_largest). Last, as their cones move
-/// what the others settle: on a scan they were first for, two cuts lost their
-/// band.
+/// first, wider and widest ones, preceded by a nearer one at the narrow distances
+/// (1.5 quads from the boundary, 2 apart: bunny-open's base holes), all with
+/// protrusion_caps (a protrusion's cap cones placed together and kept there: pig's
+/// ears) and place_again_where_folded, refused before their maps when their
+/// metric leaves the sizes off (capped_min_metric_band, capped_max_metric_largest).
+/// Last, as their cones move what the others settle: on a scan they were first
+/// for, two cuts lost their band.
 std::vector<ConePlacementOptions> capped_placements();
 
 /// Tried last (greedy) when no placement before was acceptable, the part has
