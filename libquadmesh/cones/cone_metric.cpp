@@ -8,7 +8,11 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/Sparse>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <deque>
+#include <optional>
 
 namespace qm {
 
@@ -75,6 +79,66 @@ double area_preserving_shift(const TriangleSoup& soup, const Eigen::VectorXd& u)
 
 }  // namespace
 
+namespace {
+
+/// The most doubles of u a solver remembers (128 MB): about 460 metrics of a
+/// 36,000-vertex scan.
+constexpr std::size_t remembered_values = std::size_t{16} << 20;
+
+/// A target with nonzero values at more than 1 / max_key_share of the vertices
+/// (spread over the surface) is not kept.
+constexpr std::size_t max_key_share = 4;
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+}  // namespace
+
+/// The metrics solved for, oldest first, each under its target's nonzero values,
+/// compared bit for bit (the boundary's turns and the cones: a few per cent of the
+/// vertices), for one surface curvature (the first given; the placement gives no
+/// other): a metric asked for again is the one the solve gave. Targets spread
+/// over the surface are not kept.
+struct ConeMetricSolver::Remembered {
+  using Key = std::vector<std::pair<std::size_t, double>>;
+  struct Entry {
+    Key key;
+    Eigen::VectorXd u;
+  };
+  std::vector<double> surface;
+  std::deque<Entry> entries;
+
+  /// The key of a target on `surface_curvature`; nothing when it is not kept.
+  std::optional<Key> key_of(const std::vector<double>& target, const std::vector<double>& surface_curvature) {
+    if (surface.empty()) surface = surface_curvature;
+    if (surface.size() != surface_curvature.size() ||
+        std::memcmp(surface.data(), surface_curvature.data(), sizeof(double) * surface.size()) != 0)
+      return std::nullopt;
+    Key key;
+    for (std::size_t v = 0; v < target.size(); ++v)
+      if (target[v] != 0.0 || std::signbit(target[v])) {
+        if (key.size() >= target.size() / max_key_share) return std::nullopt;
+        key.push_back({v, target[v]});
+      }
+    return key;
+  }
+
+  const Eigen::VectorXd* find(const Key& key) const {
+    const auto same = [](const std::pair<std::size_t, double>& a, const std::pair<std::size_t, double>& b) {
+      return a.first == b.first && same_bits(a.second, b.second);
+    };
+    for (const Entry& e : entries)
+      if (std::equal(e.key.begin(), e.key.end(), key.begin(), key.end(), same)) return &e.u;
+    return nullptr;
+  }
+
+  void add(Key key, const Eigen::VectorXd& u) {
+    const auto per_entry = static_cast<std::size_t>(u.size()) + 2 * key.size();
+    if (per_entry > remembered_values) return;
+    while (!entries.empty() && (entries.size() + 1) * per_entry > remembered_values) entries.pop_front();
+    entries.push_back({std::move(key), u});
+  }
+};
+
 struct ConeMetricSolver::Factor {
   SparseMatrix L;
   Eigen::VectorXd weight;
@@ -83,25 +147,32 @@ struct ConeMetricSolver::Factor {
 };
 
 ConeMetricSolver::ConeMetricSolver(const TriangleSoup& soup, const SurfaceAdjacency& adjacency)
-    : soup_(soup), adjacency_(adjacency), factor_(std::make_unique<Factor>()) {
-  factor_->L = inner_edge_laplacian(soup, adjacency);
+    : soup_(soup), adjacency_(adjacency), remembered_(std::make_unique<Remembered>()) {}
+
+const ConeMetricSolver::Factor& ConeMetricSolver::factor() const {
+  if (factor_) return *factor_;
+  auto f = std::make_unique<Factor>();
+  f->L = inner_edge_laplacian(soup_, adjacency_);
   // L is singular (constants; and a corner whose inner edges all have weight 0):
   // a faint diagonal makes it definite without moving the solution measurably
-  factor_->weight = transport_weight(factor_->L);
-  factor_->epsilon = regularization * std::max(factor_->weight.mean(), 1e-300);
-  SparseMatrix A = factor_->L;
-  for (Eigen::Index v = 0; v < A.rows(); ++v) A.coeffRef(v, v) += factor_->epsilon;
-  factor_->cholesky.setMode(Eigen::CholmodLDLt);
-  factor_->cholesky.compute(A);
-  if (factor_->cholesky.info() != Eigen::Success)
+  f->weight = transport_weight(f->L);
+  f->epsilon = regularization * std::max(f->weight.mean(), 1e-300);
+  SparseMatrix A = f->L;
+  for (Eigen::Index v = 0; v < A.rows(); ++v) A.coeffRef(v, v) += f->epsilon;
+  f->cholesky.setMode(Eigen::CholmodLDLt);
+  f->cholesky.compute(A);
+  if (f->cholesky.info() != Eigen::Success)
     throw Error(ErrorCode::solver, "the cone metric's Laplacian could not be factored (degenerate triangles?)");
+  factor_ = std::move(f);
+  return *factor_;
 }
 
 ConeMetricSolver::~ConeMetricSolver() = default;
 
 Eigen::VectorXd ConeMetricSolver::apply_inverse(const Eigen::VectorXd& x) const {
-  Eigen::VectorXd y = factor_->cholesky.solve(x);
-  if (factor_->cholesky.info() != Eigen::Success || !y.allFinite())
+  const Factor& f = factor();
+  Eigen::VectorXd y = f.cholesky.solve(x);
+  if (f.cholesky.info() != Eigen::Success || !y.allFinite())
     throw Error(ErrorCode::solver, "the cone metric's solve failed");
   return y;
 }
@@ -112,13 +183,17 @@ Eigen::VectorXd ConeMetricSolver::solve(const std::vector<double>& target_curvat
   QM_ASSERT(target_curvature.size() == nV && surface_curvature.size() == nV && nV > 0);
   Eigen::VectorXd rhs(static_cast<Eigen::Index>(nV));
   for (std::size_t v = 0; v < nV; ++v) rhs[static_cast<Eigen::Index>(v)] = target_curvature[v] - surface_curvature[v];
-  Eigen::VectorXd u = factor_->cholesky.solve(rhs);
-  if (factor_->cholesky.info() != Eigen::Success || !u.allFinite())
+  std::optional<Remembered::Key> key = remembered_->key_of(target_curvature, surface_curvature);
+  if (key)
+    if (const Eigen::VectorXd* known = remembered_->find(*key)) return *known;
+  const Factor& f = factor();
+  Eigen::VectorXd u = f.cholesky.solve(rhs);
+  if (f.cholesky.info() != Eigen::Success || !u.allFinite())
     throw Error(ErrorCode::solver, "the cone metric's solve failed");
   // every vertex must turn the field as asked; one whose inner edges carry no
   // weight cannot turn it at all
-  const Eigen::VectorXd residual = factor_->L * u - rhs;
-  const double tolerance = std::max(turning_tolerance, max_held_u * factor_->epsilon);
+  const Eigen::VectorXd residual = f.L * u - rhs;
+  const double tolerance = std::max(turning_tolerance, max_held_u * f.epsilon);
   for (std::size_t v = 0; v < nV; ++v)
     if (std::abs(residual[static_cast<Eigen::Index>(v)]) > tolerance)
       throw Error(ErrorCode::unsupported, describe_vertex(soup_, static_cast<int>(v)) +
@@ -127,11 +202,11 @@ Eigen::VectorXd ConeMetricSolver::solve(const std::vector<double>& target_curvat
                                               " degrees there (split them)");
   // such a vertex takes the mean of its neighbours' scale
   for (std::size_t v = 0; v < nV; ++v) {
-    if (factor_->weight[static_cast<Eigen::Index>(v)] > factor_->epsilon || adjacency_.vertex_faces[v].empty()) continue;
+    if (f.weight[static_cast<Eigen::Index>(v)] > f.epsilon || adjacency_.vertex_faces[v].empty()) continue;
     double sum = 0;
     int count = 0;
-    for (int f : adjacency_.vertex_faces[v])
-      for (int c : soup_.triangles[static_cast<std::size_t>(f)])
+    for (int face : adjacency_.vertex_faces[v])
+      for (int c : soup_.triangles[static_cast<std::size_t>(face)])
         if (static_cast<std::size_t>(c) != v) {
           sum += u[c];
           ++count;
@@ -139,6 +214,7 @@ Eigen::VectorXd ConeMetricSolver::solve(const std::vector<double>& target_curvat
     u[static_cast<Eigen::Index>(v)] = sum / count;
   }
   u.array() += area_preserving_shift(soup_, u);
+  if (key) remembered_->add(std::move(*key), u);
   return u;
 }
 

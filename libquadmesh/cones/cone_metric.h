@@ -25,10 +25,17 @@
 
 namespace qm {
 
-/// The factored Laplacian, for many cone sets on one surface (cone placement).
+/// The factored Laplacian, for many cone sets on one surface (cone placement). It
+/// keeps the metrics it solved for (up to remembered_values doubles of them, the
+/// oldest dropped first) and gives a target asked for again the same u without a
+/// solve: the placement weighs one cone set more than once (a pair settled, then
+/// measured), and a placement made again away from some cones repeats the steps
+/// of the first up to where it must differ (bunny-open: 170 of 560 solves). Not
+/// to be used by two threads at once.
 class ConeMetricSolver {
  public:
-  /// Throws qm::Error (solver) if the Laplacian cannot be factored.
+  /// The Laplacian is factored at the first solve, which throws qm::Error (solver)
+  /// if it cannot be.
   ConeMetricSolver(const TriangleSoup& soup, const SurfaceAdjacency& adjacency);
   ~ConeMetricSolver();
   ConeMetricSolver(const ConeMetricSolver&) = delete;
@@ -37,12 +44,18 @@ class ConeMetricSolver {
   Eigen::VectorXd solve(const std::vector<double>& target_curvature, const std::vector<double>& surface_curvature) const;
   /// (L + epsilon I)^-1 x: u up to its constant, for a right side x that sums to 0.
   Eigen::VectorXd apply_inverse(const Eigen::VectorXd& x) const;
+  /// The surface it was made for.
+  const TriangleSoup& soup() const { return soup_; }
+  const SurfaceAdjacency& adjacency() const { return adjacency_; }
 
  private:
   struct Factor;
+  struct Remembered;
+  const Factor& factor() const;
   const TriangleSoup& soup_;
   const SurfaceAdjacency& adjacency_;
-  std::unique_ptr<Factor> factor_;
+  mutable std::unique_ptr<Factor> factor_;
+  std::unique_ptr<Remembered> remembered_;
 };
 
 /// u per vertex. A vertex whose inner edges carry no weight (a corner in one

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <queue>
 #include <unordered_map>
 
@@ -608,8 +609,12 @@ std::vector<Cone> corner_cones(const TriangleSoup& soup, double size, const Cone
   return cones;
 }
 
-std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, double size,
-                              const ConePlacementOptions& options) {
+namespace {
+
+/// place_cones with `shared`'s metrics, or (null) a solver of its own made once it
+/// needs one.
+std::vector<Cone> placed_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, double size,
+                               const ConePlacementOptions& options, const ConeMetricSolver* shared) {
   QM_ASSERT(size > 0);
   std::vector<Cone> cones = corner_cones(soup, size, options);
   // the cones on the boundary (the corners, then any boundary cones) come first;
@@ -647,7 +652,9 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
     return out;
   };
   std::vector<char> eligible = eligible_beyond(boundary_distance * size);
-  const ConeMetricSolver solver(soup, adjacency);
+  std::optional<ConeMetricSolver> own;
+  if (!shared) own.emplace(soup, adjacency);
+  const ConeMetricSolver& solver = shared ? *shared : *own;
   double interior_area = 0;
   for (std::size_t v = 0; v < area.size(); ++v)
     if (!adjacency.boundary_vertex[v]) interior_area += area[v];
@@ -826,6 +833,17 @@ std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& 
     }
   }
   return cones;
+}
+
+}  // namespace
+
+std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, double size,
+                              const ConePlacementOptions& options) {
+  return placed_cones(soup, adjacency, size, options, nullptr);
+}
+
+std::vector<Cone> place_cones(const ConeMetricSolver& solver, double size, const ConePlacementOptions& options) {
+  return placed_cones(solver.soup(), solver.adjacency(), size, options, &solver);
 }
 
 }  // namespace qm

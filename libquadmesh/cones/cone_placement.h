@@ -30,6 +30,8 @@
 
 namespace qm {
 
+class ConeMetricSolver;  // cone_metric.h
+
 /// Where the interior cones come from.
 enum class InteriorCones {
   greedy,       ///< one at a time at the extremes of the conformal factor (above)
@@ -164,5 +166,10 @@ std::vector<Cone> corner_cones(const TriangleSoup& soup, double size, const Cone
 /// UncappedProtrusion when that is an uncapped protrusion's doing).
 std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, double size,
                               const ConePlacementOptions& options = {});
+
+/// The same on `solver`'s surface with its metrics, which it keeps (cone_metric.h):
+/// placements made one after another on one surface, each like the last up to a
+/// point (a placement made again away from some cones), solve what they share once.
+std::vector<Cone> place_cones(const ConeMetricSolver& solver, double size, const ConePlacementOptions& options = {});
 
 }  // namespace qm

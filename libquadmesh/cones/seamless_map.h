@@ -26,6 +26,9 @@ struct SeamlessMapReport {
   double max_rounding = 0;          ///< largest distance a value was moved to its integer
   std::size_t inverted_triangles = 0;  ///< image area <= 0
   int stiffening_rounds = 0;        ///< re-solves with folded triangles weighing more
+  /// the stiffening stopped where its folds grew past their fewest round an interior
+  /// cone the map winds a turn short (cone_winding.h): it was losing
+  bool stiffening_lost = false;
   /// roundings that took the next integer, not the nearest, to keep two corners off
   /// one lattice point (cones/internal/boundary_segments.h) or a value the integers
   /// determine off a half or a quarter

@@ -61,7 +61,7 @@ RetryPolicy::Inputs retry_inputs(const FormSetup& setup, const QuadMeshOptions& 
 QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, const ProgressCallback& progress) {
   std::vector<std::pair<std::string, double>> timings;
   Stages stages(timings, progress);
-  const FormSetup setup = prepare_forms(std::move(soup), options, stages);
+  FormSetup setup = prepare_forms(std::move(soup), options, stages);
   const SurfaceTopology input = topology_of(setup.soup);
   const int basis_count = static_cast<int>(setup.basis.size());
 
@@ -73,6 +73,7 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
   if (first.kept) {
     best = std::move(*first.kept);
   } else {
+    choose_form(setup, options, stages);
     // attempts as the retry policy orders them, the best kept (candidate_ranking.h)
     RetryPolicy retries(retry_inputs(setup, options));
     best = mesh_attempt(setup, options, retries.first().request, stages);

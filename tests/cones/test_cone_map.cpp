@@ -437,6 +437,21 @@ TEST_CASE("a T-plate: cones placed farther from the boundary and apart map witho
   check_unfolded_quads(soup, adjacency, cones, 2.343, {-1, 8});
 }
 
+TEST_CASE("a map folded round cones it winds a turn short stops stiffening once its folds grow again") {
+  // the T-plate's default placement (above): after the quantization 198 folded
+  // triangles round 5 valence-5 cones the map winds a quarter turn instead of five;
+  // one round of stiffening leaves 167, the next 198 again. The rounds after that
+  // (up to the patience's four without fewer folds) would each cost a factorization
+  const TriangleSoup soup = example_at("t-plate-two-holes.geo", 2.343);
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  const std::vector<Cone> cones = place_cones(soup, adjacency, 2.343);
+  const ConeMap m = cone_map(soup, adjacency, cones, 2.343);
+  CHECK(m.report.inverted_triangles > 0);
+  CHECK(m.misturned.size() == 5);
+  CHECK(m.report.stiffening_lost);
+  CHECK(m.report.stiffening_rounds == 2);
+}
+
 TEST_CASE("a rod end too narrow for cones 2 quads from the boundary: the rest come nearer, the map folds nowhere") {
   // examples/rod-end.geo at 1.5% of the diagonal: the shaft and the eye's ring are
   // about 3.5 quads wide and the block holds 2.4 quads between its pin hole and its

@@ -114,6 +114,24 @@ TEST_CASE("the quads and their quality are the same bit for bit on one worker th
   CHECK(one_quality.angle_dev_mean == two_quality.angle_dev_mean);
 }
 
+TEST_CASE("a cone route kept first chooses no form; the Abel route chooses one") {
+  // the most uniform form costs a search over the forms (bunny-open: 0.4 s) that
+  // only the Abel route reads
+  const TriangleSoup input = analysed(test::example("plate-two-holes.geo"));
+  const auto chose_form = [](const QuadMeshResult& r) {
+    return std::any_of(r.timings.begin(), r.timings.end(), [](const auto& t) { return t.first == "form_choice"; });
+  };
+  const QuadMeshResult cones = mesh_quads(input, QuadMeshOptions{});
+  CHECK(cones.singularities == "cones");
+  CHECK(std::isnan(cones.abel_size_band_share));  // the Abel route did not run
+  CHECK(!chose_form(cones));
+  CHECK(cones.coefficients.size() == 0);
+  const QuadMeshResult abel = mesh_quads(input, abel_options());
+  CHECK(abel.singularities == "abel");
+  CHECK(chose_form(abel));
+  CHECK(abel.coefficients.size() == abel.doubled_genus);
+}
+
 TEST_CASE("singularities auto on an annulus: the Abel quads are in the size band, so auto gives exactly them") {
   // quad size grows like r from the inner circle to the outer: within 2/3 to 4/3 of the mean
   const TriangleSoup soup = test::annulus(1.0, 2.0, 24, 192);

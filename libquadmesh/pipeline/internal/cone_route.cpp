@@ -2,6 +2,7 @@
 
 #include "libquadmesh/cones/boundary_spikes.h"
 #include "libquadmesh/cones/cone_map.h"
+#include "libquadmesh/cones/cone_metric.h"
 #include "libquadmesh/cones/cone_placement.h"
 #include "libquadmesh/cones/fillet_corners.h"
 #include "libquadmesh/cones/wide_corners.h"
@@ -108,17 +109,19 @@ namespace {
 /// Whether a surface of this topology has handles (genus > 0).
 bool has_handles(SurfaceTopology t) { return 2 - t.euler_characteristic - t.boundary_loops > 0; }
 
-/// The cones `placement` puts on setup.soup at the requested size times `lattice_factor`.
+/// The cones `placement` puts on setup.soup at the requested size times
+/// `lattice_factor`, with `solver`'s metrics if given (on setup.soup).
 std::vector<Cone> placed_cones(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages,
-                               double lattice_factor) {
+                               double lattice_factor, const ConeMetricSolver* solver = nullptr) {
   stages.next("cone_placement",
               placement.interior == InteriorCones::cross_field
                   ? std::string("placing quarter-turn cones (corners, then the smoothest cross field's singularities)")
                   : fmt::format("placing quarter-turn cones (corners, then the interior, {:g} quads from the boundary "
                                 "and {:g} apart)",
                                 placement.boundary_distance, placement.cone_spacing));
-  return place_cones(setup.soup, surface_adjacency(setup.soup), setup.preamble.size_requested * lattice_factor,
-                     placement);
+  const double size = setup.preamble.size_requested * lattice_factor;
+  if (solver) return place_cones(*solver, size, placement);
+  return place_cones(setup.soup, surface_adjacency(setup.soup), size, placement);
 }
 
 /// Whether `cones` is one of the sets in `placed`.
@@ -214,7 +217,11 @@ ConeAttempt run_attempt(const FormSetup& setup, const ConePlacementOptions& plac
                         const std::vector<std::vector<Cone>>* placed = nullptr) {
   ConeAttempt attempt;
   try {
-    attempt.cones = placed_cones(setup, placement, stages, lattice_factor);
+    // the metrics solved for are kept for the placement made again, which repeats
+    // the first's steps up to where the cones avoided change them
+    const SurfaceAdjacency adjacency = surface_adjacency(setup.soup);
+    const ConeMetricSolver metrics(setup.soup, adjacency);
+    attempt.cones = placed_cones(setup, placement, stages, lattice_factor, &metrics);
     if (placed && placed_before(*attempt.cones, *placed)) return attempt;
     std::vector<int> misturned;
     attempt.candidate = cone_quads(setup, *attempt.cones, stages, lattice_factor, smooth_inverted, placement.rounding,
@@ -231,7 +238,7 @@ ConeAttempt run_attempt(const FormSetup& setup, const ConePlacementOptions& plac
                                   "away from there",
                                   misturned.size(), misturned.size() == 1 ? "" : "s"));
       try {
-        std::vector<Cone> cones = placed_cones(setup, elsewhere, stages, lattice_factor);
+        std::vector<Cone> cones = placed_cones(setup, elsewhere, stages, lattice_factor, &metrics);
         if (placed && placed_before(cones, *placed)) break;
         Candidate candidate =
             cone_quads(setup, cones, stages, lattice_factor, smooth_inverted, placement.rounding, &misturned);

@@ -36,9 +36,8 @@ double surface_area(const TriangleSoup& soup) {
 }
 
 /// The coefficients of h the options ask for (QuadMeshOptions::coefficients or
-/// ::form), or auto's: the most uniform form with zeros at the boundary tips (and
-/// the one without them in setup.free_coefficients).
-void choose_coefficients(const QuadMeshOptions& options, FormSetup& setup) {
+/// ::form); auto's are left to choose_form.
+void asked_coefficients(const QuadMeshOptions& options, FormSetup& setup) {
   QuadMeshResult& r = setup.preamble;
   const int G = static_cast<int>(setup.basis.size());
   if (!options.coefficients.empty()) {
@@ -59,12 +58,6 @@ void choose_coefficients(const QuadMeshOptions& options, FormSetup& setup) {
                               options.form, G, G - 1),
                   "QuadMeshOptions::form");
     r.coefficients = Eigen::VectorXd::Unit(G, options.form);
-  } else {
-    const TipChoice choice = most_uniform_with_tips(setup.soup, surface_adjacency(setup.soup), setup.basis,
-                                                    options.tip_angle_deg * M_PI / 180.0);
-    r.boundary_tips = choice.tips.size();
-    r.coefficients = choice.coefficients;
-    if (!choice.tips.empty()) setup.free_coefficients = choice.free_coefficients;
   }
 }
 
@@ -132,10 +125,20 @@ FormSetup prepare_forms(TriangleSoup soup, const QuadMeshOptions& options, Stage
   setup.basis = symmetric_face_maps(forms, soup);
   setup.soup = std::move(soup);
 
-  stages.next("form_choice", "choosing the form");
-  choose_coefficients(options, setup);
+  asked_coefficients(options, setup);
   setup.loops = period_loops(setup.soup);  // of S before any cone star is refined
   return setup;
+}
+
+void choose_form(FormSetup& setup, const QuadMeshOptions& options, Stages& stages) {
+  QuadMeshResult& r = setup.preamble;
+  if (r.coefficients.size() > 0) return;  // asked for, or chosen before
+  stages.next("form_choice", "choosing the form");
+  const TipChoice choice = most_uniform_with_tips(setup.soup, surface_adjacency(setup.soup), setup.basis,
+                                                  options.tip_angle_deg * M_PI / 180.0);
+  r.boundary_tips = choice.tips.size();
+  r.coefficients = choice.coefficients;
+  if (!choice.tips.empty()) setup.free_coefficients = choice.free_coefficients;
 }
 
 }  // namespace qm

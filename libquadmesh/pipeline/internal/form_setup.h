@@ -25,10 +25,16 @@ RequestedSize requested_size(const TriangleSoup& soup, const QuadMeshOptions& op
 /// imply more quads than it allows (implied_quad_count, mesh_quads.h).
 void require_within_work_limit(const TriangleSoup& soup, const QuadMeshOptions& options);
 
-/// Remeshes when asked (RemeshPolicy), computes the symmetric forms and chooses
-/// the coefficients of h: QuadMeshOptions::coefficients, ::form, or auto (the most
-/// uniform form, with zeros at the boundary tips). Throws qm::Error(bad_input)
-/// naming the option when coefficients or form do not fit the surface.
+/// Remeshes when asked (RemeshPolicy), computes the symmetric forms and sets the
+/// coefficients of h the options ask for (QuadMeshOptions::coefficients, ::form);
+/// auto's are chosen by choose_form. Throws qm::Error(bad_input) naming the
+/// option when coefficients or form do not fit the surface.
 FormSetup prepare_forms(TriangleSoup soup, const QuadMeshOptions& options, Stages& stages);
+
+/// Auto's coefficients of h, where prepare_forms set none: the most uniform form,
+/// with zeros at the boundary tips (and the one without them in
+/// FormSetup::free_coefficients). Only the Abel route needs them: a cone route
+/// kept first never chooses (bunny-open: 0.4 s).
+void choose_form(FormSetup& setup, const QuadMeshOptions& options, Stages& stages);
 
 }  // namespace qm
