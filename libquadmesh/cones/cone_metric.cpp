@@ -62,17 +62,28 @@ Eigen::VectorXd transport_weight(const SparseMatrix& L) {
   return weight;
 }
 
-/// The constant that makes sum_f area_f e^(2 u_f) equal the surface's area.
-double area_preserving_shift(const TriangleSoup& soup, const Eigen::VectorXd& u) {
-  double area = 0, scaled = 0;
+/// Per triangle, its area.
+std::vector<double> triangle_areas(const TriangleSoup& soup) {
+  std::vector<double> out;
+  out.reserve(soup.triangles.size());
   for (const Triangle& t : soup.triangles) {
     const Vec3& p = soup.points[static_cast<std::size_t>(t[0])];
-    const double a = 0.5 * (soup.points[static_cast<std::size_t>(t[1])] - p)
-                               .cross(soup.points[static_cast<std::size_t>(t[2])] - p)
-                               .norm();
+    out.push_back(0.5 * (soup.points[static_cast<std::size_t>(t[1])] - p)
+                            .cross(soup.points[static_cast<std::size_t>(t[2])] - p)
+                            .norm());
+  }
+  return out;
+}
+
+/// The constant that makes sum_f area_f e^(2 u_f) equal the surface's area
+/// (`areas`: triangle_areas).
+double area_preserving_shift(const TriangleSoup& soup, const std::vector<double>& areas, const Eigen::VectorXd& u) {
+  double area = 0, scaled = 0;
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
+    const Triangle& t = soup.triangles[f];
     const double uf = (u[t[0]] + u[t[1]] + u[t[2]]) / 3.0;
-    area += a;
-    scaled += a * std::exp(2 * uf);
+    area += areas[f];
+    scaled += areas[f] * std::exp(2 * uf);
   }
   return scaled > 0 ? -0.5 * std::log(scaled / area) : 0.0;
 }
@@ -140,6 +151,7 @@ struct ConeMetricSolver::Remembered {
 };
 
 struct ConeMetricSolver::Factor {
+  std::vector<double> areas;  ///< per triangle (the area-preserving shift's)
   SparseMatrix L;
   Eigen::VectorXd weight;
   double epsilon = 0;
@@ -152,6 +164,7 @@ ConeMetricSolver::ConeMetricSolver(const TriangleSoup& soup, const SurfaceAdjace
 const ConeMetricSolver::Factor& ConeMetricSolver::factor() const {
   if (factor_) return *factor_;
   auto f = std::make_unique<Factor>();
+  f->areas = triangle_areas(soup_);
   f->L = inner_edge_laplacian(soup_, adjacency_);
   // L is singular (constants; and a corner whose inner edges all have weight 0):
   // a faint diagonal makes it definite without moving the solution measurably
@@ -213,7 +226,7 @@ Eigen::VectorXd ConeMetricSolver::solve(const std::vector<double>& target_curvat
         }
     u[static_cast<Eigen::Index>(v)] = sum / count;
   }
-  u.array() += area_preserving_shift(soup_, u);
+  u.array() += area_preserving_shift(soup_, f.areas, u);
   if (key) remembered_->add(std::move(*key), u);
   return u;
 }
