@@ -194,11 +194,11 @@ Eigen::VectorXd ConeMetricSolver::solve(const std::vector<double>& target_curvat
                                         const std::vector<double>& surface_curvature) const {
   const std::size_t nV = soup_.points.size();
   QM_ASSERT(target_curvature.size() == nV && surface_curvature.size() == nV && nV > 0);
-  Eigen::VectorXd rhs(static_cast<Eigen::Index>(nV));
-  for (std::size_t v = 0; v < nV; ++v) rhs[static_cast<Eigen::Index>(v)] = target_curvature[v] - surface_curvature[v];
   std::optional<Remembered::Key> key = remembered_->key_of(target_curvature, surface_curvature);
   if (key)
     if (const Eigen::VectorXd* known = remembered_->find(*key)) return *known;
+  Eigen::VectorXd rhs(static_cast<Eigen::Index>(nV));
+  for (std::size_t v = 0; v < nV; ++v) rhs[static_cast<Eigen::Index>(v)] = target_curvature[v] - surface_curvature[v];
   const Factor& f = factor();
   Eigen::VectorXd u = f.cholesky.solve(rhs);
   if (f.cholesky.info() != Eigen::Success || !u.allFinite())

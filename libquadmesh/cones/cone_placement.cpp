@@ -18,7 +18,6 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <optional>
 #include <queue>
 #include <unordered_map>
 
@@ -609,13 +608,10 @@ std::vector<Cone> corner_cones(const TriangleSoup& soup, double size, const Cone
   return cones;
 }
 
-namespace {
-
-/// place_cones with `shared`'s metrics, or (null) a solver of its own made once it
-/// needs one.
-std::vector<Cone> placed_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, double size,
-                               const ConePlacementOptions& options, const ConeMetricSolver* shared) {
+std::vector<Cone> place_cones(const ConeMetricSolver& solver, double size, const ConePlacementOptions& options) {
   QM_ASSERT(size > 0);
+  const TriangleSoup& soup = solver.soup();
+  const SurfaceAdjacency& adjacency = solver.adjacency();
   std::vector<Cone> cones = corner_cones(soup, size, options);
   // the cones on the boundary (the corners, then any boundary cones) come first;
   // the interior ones, which the settling moves, after them
@@ -652,9 +648,6 @@ std::vector<Cone> placed_cones(const TriangleSoup& soup, const SurfaceAdjacency&
     return out;
   };
   std::vector<char> eligible = eligible_beyond(boundary_distance * size);
-  std::optional<ConeMetricSolver> own;
-  if (!shared) own.emplace(soup, adjacency);
-  const ConeMetricSolver& solver = shared ? *shared : *own;
   double interior_area = 0;
   for (std::size_t v = 0; v < area.size(); ++v)
     if (!adjacency.boundary_vertex[v]) interior_area += area[v];
@@ -835,15 +828,11 @@ std::vector<Cone> placed_cones(const TriangleSoup& soup, const SurfaceAdjacency&
   return cones;
 }
 
-}  // namespace
-
 std::vector<Cone> place_cones(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, double size,
                               const ConePlacementOptions& options) {
-  return placed_cones(soup, adjacency, size, options, nullptr);
-}
-
-std::vector<Cone> place_cones(const ConeMetricSolver& solver, double size, const ConePlacementOptions& options) {
-  return placed_cones(solver.soup(), solver.adjacency(), size, options, &solver);
+  // (factored at its first solve: a placement that needs none costs none)
+  const ConeMetricSolver solver(soup, adjacency);
+  return place_cones(solver, size, options);
 }
 
 }  // namespace qm

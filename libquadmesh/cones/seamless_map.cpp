@@ -592,17 +592,6 @@ Eigen::VectorXd quantize(PenaltySolver& solver, const IntegerCandidates& order, 
   return z;
 }
 
-/// Per triangle: its image (wedge values of its corners) is not positive.
-std::vector<char> folded_triangles(const CutGraph& cut, const Eigen::VectorXd& z) {
-  std::vector<char> folded(cut.wedge.size(), 0);
-  for (std::size_t f = 0; f < cut.wedge.size(); ++f) {
-    CornerValues c;
-    for (std::size_t k = 0; k < 3; ++k) c[k] = Complex(z[real_of(cut.wedge[f][k])], z[imag_of(cut.wedge[f][k])]);
-    folded[f] = image_area2(c) <= 0;
-  }
-  return folded;
-}
-
 /// The map's corners: each triangle corner's wedge value in z.
 FaceMap corner_values(const CutGraph& cut, const Eigen::VectorXd& z) {
   FaceMap map;
@@ -613,6 +602,13 @@ FaceMap corner_values(const CutGraph& cut, const Eigen::VectorXd& z) {
       map.corners[f][k] = Complex(z[real_of(w)], z[imag_of(w)]);
     }
   return map;
+}
+
+/// Per triangle: its image is not positive.
+std::vector<char> folded_triangles(const FaceMap& map) {
+  std::vector<char> folded(map.corners.size(), 0);
+  for (std::size_t f = 0; f < map.corners.size(); ++f) folded[f] = image_area2(map.corners[f]) <= 0;
+  return folded;
 }
 
 /// Multiplies the stiffness of folded triangles and of the triangles at their
@@ -671,13 +667,14 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   std::size_t fewest = std::numeric_limits<std::size_t>::max();
   int stalled = 0;
   for (int round = 0; seams_close && round < max_stiffening_rounds && stalled < stiffening_patience; ++round) {
-    const std::vector<char> folded = folded_triangles(cut, z);
+    const FaceMap image = corner_values(cut, z);
+    const std::vector<char> folded = folded_triangles(image);
     const auto count = static_cast<std::size_t>(std::count(folded.begin(), folded.end(), 1));
     if (count == 0) break;
     const bool more_than_fewest = count > fewest;
     stalled = count < fewest ? 0 : stalled + 1;
     fewest = std::min(fewest, count);
-    if (more_than_fewest && !misturned_cones(soup, adjacency, corner_values(cut, z), quads).empty()) {
+    if (more_than_fewest && !misturned_cones(soup, adjacency, image, quads).empty()) {
       report.stiffening_lost = true;
       break;
     }
@@ -706,8 +703,8 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   report.max_seam_residual = solver.max_residual(z);
 
   FaceMap map = corner_values(cut, z);
-  for (const CornerValues& c : map.corners)
-    if (image_area2(c) <= 0) ++report.inverted_triangles;
+  const std::vector<char> folded = folded_triangles(map);
+  report.inverted_triangles = static_cast<std::size_t>(std::count(folded.begin(), folded.end(), 1));
   return map;
 }
 

@@ -110,18 +110,16 @@ namespace {
 bool has_handles(SurfaceTopology t) { return 2 - t.euler_characteristic - t.boundary_loops > 0; }
 
 /// The cones `placement` puts on setup.soup at the requested size times
-/// `lattice_factor`, with `solver`'s metrics if given (on setup.soup).
+/// `lattice_factor`, with `metrics` (on setup.soup).
 std::vector<Cone> placed_cones(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages,
-                               double lattice_factor, const ConeMetricSolver* solver = nullptr) {
+                               double lattice_factor, const ConeMetricSolver& metrics) {
   stages.next("cone_placement",
               placement.interior == InteriorCones::cross_field
                   ? std::string("placing quarter-turn cones (corners, then the smoothest cross field's singularities)")
                   : fmt::format("placing quarter-turn cones (corners, then the interior, {:g} quads from the boundary "
                                 "and {:g} apart)",
                                 placement.boundary_distance, placement.cone_spacing));
-  const double size = setup.preamble.size_requested * lattice_factor;
-  if (solver) return place_cones(*solver, size, placement);
-  return place_cones(setup.soup, surface_adjacency(setup.soup), size, placement);
+  return place_cones(metrics, setup.preamble.size_requested * lattice_factor, placement);
 }
 
 /// Whether `cones` is one of the sets in `placed`.
@@ -221,7 +219,7 @@ ConeAttempt run_attempt(const FormSetup& setup, const ConePlacementOptions& plac
     // the first's steps up to where the cones avoided change them
     const SurfaceAdjacency adjacency = surface_adjacency(setup.soup);
     const ConeMetricSolver metrics(setup.soup, adjacency);
-    attempt.cones = placed_cones(setup, placement, stages, lattice_factor, &metrics);
+    attempt.cones = placed_cones(setup, placement, stages, lattice_factor, metrics);
     if (placed && placed_before(*attempt.cones, *placed)) return attempt;
     std::vector<int> misturned;
     attempt.candidate = cone_quads(setup, *attempt.cones, stages, lattice_factor, smooth_inverted, placement.rounding,
@@ -238,7 +236,7 @@ ConeAttempt run_attempt(const FormSetup& setup, const ConePlacementOptions& plac
                                   "away from there",
                                   misturned.size(), misturned.size() == 1 ? "" : "s"));
       try {
-        std::vector<Cone> cones = placed_cones(setup, elsewhere, stages, lattice_factor, &metrics);
+        std::vector<Cone> cones = placed_cones(setup, elsewhere, stages, lattice_factor, metrics);
         if (placed && placed_before(cones, *placed)) break;
         Candidate candidate =
             cone_quads(setup, cones, stages, lattice_factor, smooth_inverted, placement.rounding, &misturned);
@@ -265,7 +263,9 @@ ConeAttempt run_attempt(const FormSetup& setup, const ConePlacementOptions& plac
 
 Candidate cone_attempt(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages,
                        std::vector<std::vector<Cone>>& placed, double lattice_factor, bool smooth_inverted) {
-  std::vector<Cone> cones = placed_cones(setup, placement, stages, lattice_factor);
+  const SurfaceAdjacency adjacency = surface_adjacency(setup.soup);
+  std::vector<Cone> cones =
+      placed_cones(setup, placement, stages, lattice_factor, ConeMetricSolver(setup.soup, adjacency));
   if (placed_before(cones, placed)) throw Error(ErrorCode::unsupported, placed_before_error);
   placed.push_back(cones);
   return cone_quads(setup, std::move(cones), stages, lattice_factor, smooth_inverted, placement.rounding);
