@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <utility>
 
 namespace qm {
@@ -20,27 +21,40 @@ constexpr double max_turn_per_weight = 1.0;
 /// Turns below this (radians) are the rounding of a CAD corner's angle.
 constexpr double min_turn = 1e-6;
 
-/// Per point, the sum of its triangles' angles.
-std::vector<double> angle_sums(const TriangleSoup& soup) {
+/// The indices of every triangle of `soup`, in order.
+std::vector<std::size_t> every_triangle(const TriangleSoup& soup) {
+  std::vector<std::size_t> out(soup.triangles.size());
+  std::iota(out.begin(), out.end(), std::size_t{0});
+  return out;
+}
+
+/// Per point, the sum of the angles of its corners in `triangles` (in order): its
+/// whole angle sum at a point all of whose triangles are there.
+std::vector<double> angle_sums(const TriangleSoup& soup, const std::vector<std::size_t>& triangles) {
   std::vector<double> total(soup.points.size(), 0.0);
-  for (std::size_t f = 0; f < soup.triangles.size(); ++f)
+  for (std::size_t f : triangles)
     for (int k = 0; k < 3; ++k)
       total[static_cast<std::size_t>(soup.triangles[f][static_cast<std::size_t>(k)])] += corner_angle(soup, f, k);
   return total;
 }
 
+/// Corner k of triangle f as the cone metric opens it: its angle times n pi/2
+/// over its point's angle sum (`total`), n = quads at the point.
+double opened_corner(const TriangleSoup& soup, std::size_t f, int k, const std::vector<double>& total,
+                     const std::vector<int>& quads) {
+  double angle = corner_angle(soup, f, k);
+  const auto v = static_cast<std::size_t>(soup.triangles[f][static_cast<std::size_t>(k)]);
+  if (total[v] > 0) angle *= quads[v] * quarter_turn / total[v];
+  return angle;
+}
+
 }  // namespace
 
 std::vector<double> opened_corners(const TriangleSoup& soup, const std::vector<int>& quads) {
+  const std::vector<double> total = angle_sums(soup, every_triangle(soup));
   std::vector<double> angle(3 * soup.triangles.size());
   for (std::size_t f = 0; f < soup.triangles.size(); ++f)
-    for (int k = 0; k < 3; ++k) angle[3 * f + static_cast<std::size_t>(k)] = corner_angle(soup, f, k);
-  const std::vector<double> total = angle_sums(soup);
-  for (std::size_t f = 0; f < soup.triangles.size(); ++f)
-    for (std::size_t k = 0; k < 3; ++k) {
-      const auto v = static_cast<std::size_t>(soup.triangles[f][k]);
-      if (total[v] > 0) angle[3 * f + k] *= quads[v] * quarter_turn / total[v];
-    }
+    for (int k = 0; k < 3; ++k) angle[3 * f + static_cast<std::size_t>(k)] = opened_corner(soup, f, k, total, quads);
   return angle;
 }
 
@@ -89,16 +103,21 @@ WideCornerSplits split_chosen_corners(TriangleSoup& soup, const std::vector<Cone
   return out;
 }
 
-/// The corners opened wider than `max_opened` at the vertices `takes(v, quads)`
-/// selects, the widest first.
+/// The corners of `triangles` opened wider than `max_opened` (opened_corner, with
+/// `total` the points' angle sums, whole at the points `takes(v)` selects) at
+/// those points, the widest first.
 template <typename Takes>
-std::vector<int> wide_corners_at(const TriangleSoup& soup, const std::vector<int>& quads, double max_opened,
-                                 const Takes& takes) {
-  const std::vector<double> opened = opened_corners(soup, quads);
+std::vector<int> wide_corners_among(const TriangleSoup& soup, const std::vector<std::size_t>& triangles,
+                                    const std::vector<double>& total, const std::vector<int>& quads,
+                                    double max_opened, const Takes& takes) {
   std::vector<std::pair<double, int>> wide;
-  for (std::size_t c = 0; c < opened.size(); ++c)
-    if (opened[c] > max_opened && takes(static_cast<std::size_t>(soup.triangles[c / 3][c % 3])))
-      wide.push_back({opened[c], static_cast<int>(c)});
+  for (std::size_t f : triangles)
+    for (int k = 0; k < 3; ++k) {
+      const auto v = static_cast<std::size_t>(soup.triangles[f][static_cast<std::size_t>(k)]);
+      if (!takes(v)) continue;
+      const double opened = opened_corner(soup, f, k, total, quads);
+      if (opened > max_opened) wide.push_back({opened, static_cast<int>(3 * f) + k});
+    }
   std::sort(wide.begin(), wide.end(), std::greater<>());
   std::vector<int> out;
   for (const auto& w : wide) out.push_back(w.second);
@@ -114,17 +133,6 @@ std::vector<std::size_t> boundary_triangles(const TriangleSoup& soup, const Surf
                     [&](int v) { return adjacency.boundary_vertex[static_cast<std::size_t>(v)] != 0; }))
       out.push_back(f);
   return out;
-}
-
-/// Per point, the sum of the angles of its corners in `triangles` (its whole
-/// angle sum at a vertex all of whose triangles are there; summed in the order
-/// angle_sums does, so the same bits).
-std::vector<double> angle_sums_over(const TriangleSoup& soup, const std::vector<std::size_t>& triangles) {
-  std::vector<double> total(soup.points.size(), 0.0);
-  for (std::size_t f : triangles)
-    for (int k = 0; k < 3; ++k)
-      total[static_cast<std::size_t>(soup.triangles[f][static_cast<std::size_t>(k)])] += corner_angle(soup, f, k);
-  return total;
 }
 
 /// Per point, the cotangent weights of its inner edges in `triangles` summed:
@@ -153,8 +161,9 @@ WideCornerSplits split_wide_corners(TriangleSoup& soup, const std::vector<Cone>&
   // at cones (a regular vertex keeps about its own angles)
   return split_chosen_corners(soup, cones, [&](const TriangleSoup& s, const SurfaceAdjacency& adjacency,
                                                const std::vector<int>& quads) {
-    return wide_corners_at(s, quads, max_opened,
-                           [&](std::size_t v) { return quads[v] != (adjacency.boundary_vertex[v] ? 2 : 4); });
+    const std::vector<std::size_t> triangles = every_triangle(s);
+    return wide_corners_among(s, triangles, angle_sums(s, triangles), quads, max_opened,
+                              [&](std::size_t v) { return quads[v] != (adjacency.boundary_vertex[v] ? 2 : 4); });
   });
 }
 
@@ -164,7 +173,7 @@ WideCornerSplits split_turned_boundary(TriangleSoup& soup, const std::vector<Con
     // only the boundary vertices are read: their triangles' angles, not the
     // whole surface's (a scan of 70,000 triangles: 8 passes of those)
     const std::vector<std::size_t> triangles = boundary_triangles(s, adjacency);
-    const std::vector<double> total = angle_sums_over(s, triangles);
+    const std::vector<double> total = angle_sums(s, triangles);
     const std::vector<double> weight = inner_edge_weight(s, adjacency, triangles);
     // the boundary vertices the metric must turn by more than their inner edges
     // take at max_turn_per_weight
@@ -173,32 +182,25 @@ WideCornerSplits split_turned_boundary(TriangleSoup& soup, const std::vector<Con
       turned[v] = adjacency.boundary_vertex[v] &&
                   std::abs(quads[v] * quarter_turn - total[v]) > max_turn_per_weight * std::max(weight[v], 0.0) &&
                   std::abs(quads[v] * quarter_turn - total[v]) > min_turn;
-    // their corners opened wider than max_turned_corner, the widest first (ties:
-    // the later corner first), as wide_corners_at orders them; and the widest
-    // corner of one whose corners are none that wide
-    std::vector<std::pair<double, int>> wide;
-    std::vector<char> has(s.points.size(), 0);  // a corner that wide
+    const auto vertex_of = [&](int c) {
+      return static_cast<std::size_t>(s.triangles[static_cast<std::size_t>(c / 3)][static_cast<std::size_t>(c % 3)]);
+    };
+    std::vector<int> out = wide_corners_among(s, triangles, total, quads, max_turned_corner,
+                                              [&](std::size_t v) { return turned[v] != 0; });
+    // and the widest corner of one whose corners are none that wide
+    std::vector<char> has(s.points.size(), 0);
+    for (int c : out) has[vertex_of(c)] = 1;
     std::vector<int> widest(s.points.size(), -1);
     std::vector<double> widest_angle(s.points.size(), 0.0);
     for (std::size_t f : triangles)
       for (int k = 0; k < 3; ++k) {
-        const auto v = static_cast<std::size_t>(s.triangles[f][static_cast<std::size_t>(k)]);
-        if (!turned[v]) continue;
         const int c = static_cast<int>(3 * f) + k;
+        const std::size_t v = vertex_of(c);
         const double angle = corner_angle(s, f, k);
-        double opened = angle;
-        if (total[v] > 0) opened *= quads[v] * quarter_turn / total[v];
-        if (opened > max_turned_corner) {
-          wide.push_back({opened, c});
-          has[v] = 1;
-        }
-        if (angle > widest_angle[v]) widest[v] = c, widest_angle[v] = angle;
+        if (turned[v] && !has[v] && angle > widest_angle[v]) widest[v] = c, widest_angle[v] = angle;
       }
-    std::sort(wide.begin(), wide.end(), std::greater<>());
-    std::vector<int> out;
-    for (const auto& w : wide) out.push_back(w.second);
-    for (std::size_t v = 0; v < widest.size(); ++v)
-      if (widest[v] >= 0 && !has[v]) out.push_back(widest[v]);
+    for (int c : widest)
+      if (c >= 0) out.push_back(c);
     return out;
   });
 }
