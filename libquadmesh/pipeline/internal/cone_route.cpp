@@ -450,19 +450,15 @@ void judge_as_written(ConeCandidate& cones, const QuadMeshOptions& options, doub
 /// one does not (fertility, its handles steered: the first sound placement has 85%
 /// of its quads in the band and two corners wrong). When none is acceptable: the first sound one
 /// (judged, if it was); when none is sound, the last that gave quads, measured;
-/// nothing when every one threw (`failure` then says why the first did). `mapped`,
-/// if given, is set when some placement got as far as its map.
+/// nothing when every one threw (`failure` then says why the first did).
 std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, const QuadMeshOptions& options,
                                                    SurfaceTopology input, Stages& stages, double lattice_factor,
-                                                   int& attempts_left, std::string& failure,
-                                                   RoundingOrder rounding = RoundingOrder::cones_first,
-                                                   bool* mapped = nullptr) {
+                                                   int& attempts_left, std::string& failure) {
   std::optional<ConeCandidate> last, first_sound;
   std::vector<std::vector<Cone>> placed;
   const InteriorCones interior = options.cone_placement == ConePlacement::cross_field ? InteriorCones::cross_field
                                                                                      : InteriorCones::greedy;
   std::vector<ConePlacementOptions> placements = cone_placements(interior, has_handles(input));
-  for (ConePlacementOptions& p : placements) p.rounding = rounding;
   // with two threads, two placements at a time (each a seamless map of up to
   // several seconds, on one core); the first acceptable one in order is kept, as
   // one at a time would, and what a placement after it found is dropped
@@ -492,10 +488,7 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
         if (!protrusion && std::any_of(fillets.begin(), fillets.end(), convex_fillet)) more = fillet_placements();
         if (more.empty()) break;
       }
-      for (ConePlacementOptions& p : more) {
-        p.rounding = rounding;
-        placements.push_back(p);
-      }
+      placements.insert(placements.end(), more.begin(), more.end());
     }
     const std::size_t count = std::min({width, placements.size() - start, static_cast<std::size_t>(attempts_left)});
     std::vector<ConeAttempt> attempts;
@@ -518,7 +511,6 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
         error = placed_before_error;
       } else if (attempt.cones) {
         placed.push_back(*attempt.cones);
-        if (mapped) *mapped = true;
       }
       if (!error.empty()) {
         if (failure.empty()) failure = error;
@@ -529,10 +521,8 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
           // beside this one too, as one thread would not have made them)
           capped_added = true;
           placements.resize(start + consumed);
-          for (ConePlacementOptions p : capped_placements()) {
-            p.rounding = rounding;
-            placements.push_back(p);
-          }
+          const std::vector<ConePlacementOptions> capped = capped_placements();
+          placements.insert(placements.end(), capped.begin(), capped.end());
           break;
         }
         continue;
@@ -601,26 +591,12 @@ ConeCandidate cone_candidate(const FormSetup& form_setup, const QuadMeshOptions&
   // every placement, the fallbacks, the capped ones and those with the fillets' cones
   int every_placement = static_cast<int>(cone_placements(InteriorCones::greedy, has_handles(input)).size() + 2 +
                                          capped_placements().size() + fillet_placements().size());
-  bool mapped = false;
-  std::optional<ConeCandidate> cones = first_acceptable_placement(setup, options, input, stages, 1.0, every_placement,
-                                                                  failure, RoundingOrder::cones_first, &mapped);
-  // (when every placement was refused before its map, the rounding order has
-  // nothing to change)
-  if (mapped && (!cones || !sound(cones->candidate.quality, input, options.acceptance))) {
-    // the cones and lines rounded first can leave the cut translations, and the
-    // boundary segments a cut ends in, far from their fit (seamless_map.h): every
-    // placement again with the translations rounded first; the last pass's
-    // candidate stands when this one finds nothing sound either
-    stages.announce("no placement gave sound quads: the placements again, the seamless maps rounding the cut "
-                    "translations first");
-    // (the capped ones only as far as the attempts left after the fallbacks
-    // reach: every placement's map costs seconds on a large scan)
-    int second_pass = static_cast<int>(cone_placements(InteriorCones::greedy, has_handles(input)).size()) + 2;
-    std::string ignored;
-    std::optional<ConeCandidate> again = first_acceptable_placement(setup, options, input, stages, 1.0, second_pass,
-                                                               ignored, RoundingOrder::translations_first);
-    if (again && (!cones || sound(again->candidate.quality, input, options.acceptance))) cones = std::move(again);
-  }
+  // (the cones rounded first only: every placement mapped again with the
+  // translations rounded first, where none gave sound quads, made none of the 33
+  // shared meshes, examples, parts and scan cuts sound; the scans' maps lost their
+  // topology that way, and a failing route paid up to ten more maps)
+  std::optional<ConeCandidate> cones =
+      first_acceptable_placement(setup, options, input, stages, 1.0, every_placement, failure);
   if (!cones) throw Error(ErrorCode::unsupported, failure);
   // sound, but some quads a little larger than the acceptance allows: where the
   // lattice falls against the cone metric's sizes is a matter of rounding, so the
