@@ -79,14 +79,14 @@ TriangleSoup cut_holes(const TriangleSoup& soup, const std::vector<int>& centres
 }
 
 /// A CAD part read and meshed as `quadmesh mesh PATH --size 1.5%` does, with the
-/// defaults: its surface in `input`, the quads returned.
-QuadMeshResult mesh_cad_part(const std::string& path, TriangleSoup& input) {
+/// defaults: its surface in `input`, the quads returned, the progress to `progress`.
+QuadMeshResult mesh_cad_part(const std::string& path, TriangleSoup& input, const ProgressCallback& progress = {}) {
   QuadMeshOptions options;
   options.size_relative = 0.015;
   io::ReadOptions read;
   read.quad_size_relative = options.size_relative;
   input = analyze_topology(io::read_surface(path, read).soup).soup;
-  return mesh_quads(input, options);
+  return mesh_quads(input, options, progress);
 }
 
 /// mesh_cad_part of a .geo `text`, written to a scratch folder `name`.
@@ -211,14 +211,10 @@ TEST_CASE("a cone route none of whose placements is sound maps each placement on
   // map folds (129 folded triangles, two boundary loops lost) and the Abel quads
   // are kept. Mapping every placement again with the translations rounded first
   // cost a second map and made no input sound (its scans' maps lost their topology)
-  QuadMeshOptions options;
-  options.size_relative = 0.015;
-  io::ReadOptions read;
-  read.quad_size_relative = options.size_relative;
-  const TriangleSoup input =
-      analyze_topology(io::read_surface(test::example("parts/z-plate-holes.geo"), read).soup).soup;
+  TriangleSoup input;
   std::vector<std::string> messages;
-  const QuadMeshResult r = mesh_quads(input, options, [&](const std::string& m) { messages.push_back(m); });
+  const QuadMeshResult r = mesh_cad_part(test::example("parts/z-plate-holes.geo"), input,
+                                         [&](const std::string& m) { messages.push_back(m); });
   CHECK(r.singularities == "abel");
   const auto maps = std::count_if(messages.begin(), messages.end(), [](const std::string& m) {
     return m.find("the seamless map with") != std::string::npos;
