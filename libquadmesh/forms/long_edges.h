@@ -14,8 +14,13 @@ namespace qm {
 /// `max_length`, that edge is split at its midpoint (each of its one or two
 /// triangles into two; a triangle takes one split per pass). CAD curve edges are
 /// split with their curve; new points get label -1 and new triangles their
-/// parent's label. Returns the number of splits. Precondition: an oriented
-/// manifold soup; max_length > 0.
+/// parent's label. Where the input has flat faces (two neighbours in one plane:
+/// a CAD part's STL), the needles each pass leaves there (an angle under 10
+/// degrees) are flipped to the Delaunay diagonal of the two triangles at an edge,
+/// within one plane and never across a CAD curve: a face of slivers is split
+/// into about as many triangles as its area needs, not fanned out into needles.
+/// A scan (no two triangles in one plane) is bisected only. Returns the number of
+/// splits. Precondition: an oriented manifold soup; max_length > 0.
 std::size_t split_long_edges(TriangleSoup& soup, double max_length);
 
 /// The fraction of the surface's area in triangles with an edge longer than
