@@ -11,15 +11,38 @@
 
 using namespace qm;
 
+namespace {
+
+/// The length of the soup's boundary edges, checking that every edge has one or two
+/// triangles (conforming).
+double conforming_boundary_length(const TriangleSoup& soup) {
+  const EdgeIncidence inc = edge_incidence(soup);
+  double boundary = 0;
+  for (std::size_t e = 0; e < inc.edge_count(); ++e) {
+    CHECK(inc.valence(static_cast<int>(e)) <= 2);
+    if (inc.is_boundary(static_cast<int>(e)))
+      boundary += (soup.points[inc.edges[e][0]] - soup.points[inc.edges[e][1]]).norm();
+  }
+  return boundary;
+}
+
+/// split_long_edges(soup, limit), checking that every input point is kept where it
+/// was and the new points are as many as the splits.
+std::size_t split_keeping_points(TriangleSoup& soup, double limit) {
+  const TriangleSoup before = soup;
+  const std::size_t splits = split_long_edges(soup, limit);
+  CHECK(soup.points.size() == before.points.size() + splits);
+  for (std::size_t v = 0; v < before.points.size(); ++v) CHECK(soup.points[v] == before.points[v]);
+  return splits;
+}
+
+}  // namespace
+
 TEST_CASE("long edges: split until none is longer than the limit, every input vertex kept") {
   TriangleSoup soup = test::grid(2);  // edges 0.5, diagonals 0.71
   for (int j = 0; j < 2; ++j) soup.cad.edges.push_back({j, j + 1, 7});  // the side x = 0 is CAD curve 7
-  const TriangleSoup before = soup;
   const double limit = 0.2;
-  const std::size_t splits = split_long_edges(soup, limit);
-  CHECK(splits > 0);
-  CHECK(soup.points.size() == before.points.size() + splits);
-  for (std::size_t v = 0; v < before.points.size(); ++v) CHECK(soup.points[v] == before.points[v]);
+  CHECK(split_keeping_points(soup, limit) > 0);
 
   double area = 0;
   for (const Triangle& t : soup.triangles) {
@@ -29,15 +52,8 @@ TEST_CASE("long edges: split until none is longer than the limit, every input ve
     for (int k = 0; k < 3; ++k) CHECK((soup.points[t[k]] - soup.points[t[(k + 1) % 3]]).norm() <= limit + 1e-12);
   }
   CHECK(area == doctest::Approx(1.0));
-  // conforming: every edge has one or two triangles, boundary edges only on the square's sides
-  const EdgeIncidence inc = edge_incidence(soup);
-  double boundary = 0;
-  for (std::size_t e = 0; e < inc.edge_count(); ++e) {
-    CHECK(inc.valence(static_cast<int>(e)) <= 2);
-    if (inc.is_boundary(static_cast<int>(e)))
-      boundary += (soup.points[inc.edges[e][0]] - soup.points[inc.edges[e][1]]).norm();
-  }
-  CHECK(boundary == doctest::Approx(4.0));
+  // conforming, boundary edges only on the square's sides
+  CHECK(conforming_boundary_length(soup) == doctest::Approx(4.0));
   // the CAD curve is split with its edges: still the whole side x = 0, in short pieces
   double curve = 0;
   for (const CurveEdge& e : soup.cad.edges) {
@@ -106,12 +122,8 @@ TEST_CASE("long edges: a flat face of slivers is split into about as many triang
   TriangleSoup soup = sliver_strip(0.0);
   soup.triangle_labels.resize(soup.triangles.size());
   for (std::size_t f = 0; f < soup.triangles.size(); ++f) soup.triangle_labels[f] = 100 + static_cast<int>(f);
-  const TriangleSoup before = soup;
   const double limit = 0.25;
-  const std::size_t splits = split_long_edges(soup, limit);
-  CHECK(splits > 0);
-  CHECK(soup.points.size() == before.points.size() + splits);
-  for (std::size_t v = 0; v < before.points.size(); ++v) CHECK(soup.points[v] == before.points[v]);
+  CHECK(split_keeping_points(soup, limit) > 0);
   CHECK(soup.triangles.size() < 1300);  // 1184; right isosceles halves of the limit: 640
   CHECK(smallest_angle_of(soup) > 10 * M_PI / 180);  // 11.1 degrees
   // the same surface: in the plane, the area, every triangle turned up, conforming,
@@ -131,14 +143,7 @@ TEST_CASE("long edges: a flat face of slivers is split into about as many triang
   }
   CHECK(soup.triangle_labels.size() == soup.triangles.size());
   CHECK(area == doctest::Approx(10.0));
-  const EdgeIncidence inc = edge_incidence(soup);
-  double boundary = 0;
-  for (std::size_t e = 0; e < inc.edge_count(); ++e) {
-    CHECK(inc.valence(static_cast<int>(e)) <= 2);
-    if (inc.is_boundary(static_cast<int>(e)))
-      boundary += (soup.points[inc.edges[e][0]] - soup.points[inc.edges[e][1]]).norm();
-  }
-  CHECK(boundary == doctest::Approx(22.0));
+  CHECK(conforming_boundary_length(soup) == doctest::Approx(22.0));
 }
 
 TEST_CASE("long edges: where no two triangles share a plane (a scan), the bisection alone") {
