@@ -65,7 +65,9 @@ std::vector<char> flat_face_triangles(const TriangleSoup& soup) {
     if (inc.valence(static_cast<int>(e)) != 2) continue;
     const auto f1 = static_cast<std::size_t>(inc.halfedges[static_cast<std::size_t>(inc.offsets[e])] / 3);
     const auto f2 = static_cast<std::size_t>(inc.halfedges[static_cast<std::size_t>(inc.offsets[e]) + 1] / 3);
-    if (angle_between(normal(soup, soup.triangles[f1]), normal(soup, soup.triangles[f2])) < coplanar_normals)
+    const Vec3 n1 = normal(soup, soup.triangles[f1]), n2 = normal(soup, soup.triangles[f2]);
+    // (a triangle of no area has no plane: its zero normal is at angle 0 to any)
+    if (n1.squaredNorm() > 0 && n2.squaredNorm() > 0 && angle_between(n1, n2) < coplanar_normals)
       flat[f1] = flat[f2] = 1;
   }
   return flat;
