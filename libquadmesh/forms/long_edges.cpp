@@ -44,15 +44,8 @@ Vec3 normal(const TriangleSoup& soup, const Triangle& t) {
   return (soup.points[static_cast<std::size_t>(t[1])] - a).cross(soup.points[static_cast<std::size_t>(t[2])] - a);
 }
 
-/// The angle of triangle t at its corner k.
-double corner_angle(const TriangleSoup& soup, const Triangle& t, int k) {
-  const Vec3& p = soup.points[static_cast<std::size_t>(t[k])];
-  return angle_between(soup.points[static_cast<std::size_t>(t[(k + 1) % 3])] - p,
-                       soup.points[static_cast<std::size_t>(t[(k + 2) % 3])] - p);
-}
-
-double smallest_angle(const TriangleSoup& soup, const Triangle& t) {
-  return std::min({corner_angle(soup, t, 0), corner_angle(soup, t, 1), corner_angle(soup, t, 2)});
+double smallest_angle(const TriangleSoup& soup, std::size_t f) {
+  return std::min({corner_angle(soup, f, 0), corner_angle(soup, f, 1), corner_angle(soup, f, 2)});
 }
 
 /// Per triangle of the input: it lies in a flat face, a plane it shares with a
@@ -104,8 +97,8 @@ std::size_t flip_flat_needles(TriangleSoup& soup, const std::vector<char>& flat,
     if (t2[k2] != b || t2[(k2 + 1) % 3] != a || c == d) continue;  // not oppositely oriented: left alone
     const Vec3 n1 = normal(soup, t1), n2 = normal(soup, t2);
     if (!(angle_between(n1, n2) < coplanar_normals)) continue;
-    if (std::min(smallest_angle(soup, t1), smallest_angle(soup, t2)) >= needle_angle) continue;
-    if (corner_angle(soup, t1, (k1 + 2) % 3) + corner_angle(soup, t2, (k2 + 2) % 3) <= M_PI + 1e-12) continue;
+    if (std::min(smallest_angle(soup, f1), smallest_angle(soup, f2)) >= needle_angle) continue;
+    if (corner_angle(soup, f1, (k1 + 2) % 3) + corner_angle(soup, f2, (k2 + 2) % 3) <= M_PI + 1e-12) continue;
     if (edges.count({std::min(c, d), std::max(c, d)})) continue;
     const Triangle n1t{a, d, c}, n2t{d, b, c};
     if (!(normal(soup, n1t).dot(n1) > 0) || !(normal(soup, n2t).dot(n1) > 0)) continue;

@@ -1,5 +1,6 @@
 // Longest-edge bisection of triangles wider than the quads (forms/long_edges.h).
 #include "libquadmesh/forms/long_edges.h"
+#include "libquadmesh/quality/triangle_quality.h"
 #include "libquadmesh/topology/internal/edge_incidence.h"
 #include "tests/support/test_meshes.h"
 
@@ -102,16 +103,6 @@ TriangleSoup sliver_strip(double bend) {
   return soup;
 }
 
-double smallest_angle_of(const TriangleSoup& soup) {
-  double smallest = M_PI;
-  for (const Triangle& t : soup.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const Vec3& p = soup.points[t[k]];
-      smallest = std::min(smallest, angle_between(soup.points[t[(k + 1) % 3]] - p, soup.points[t[(k + 2) % 3]] - p));
-    }
-  return smallest;
-}
-
 }  // namespace
 
 TEST_CASE("long edges: a flat face of slivers is split into about as many triangles as its area needs") {
@@ -125,7 +116,7 @@ TEST_CASE("long edges: a flat face of slivers is split into about as many triang
   const double limit = 0.25;
   CHECK(split_keeping_points(soup, limit) > 0);
   CHECK(soup.triangles.size() < 1300);  // 1184; right isosceles halves of the limit: 640
-  CHECK(smallest_angle_of(soup) > 10 * M_PI / 180);  // 11.1 degrees
+  CHECK(triangle_quality(soup).min_angle_deg > 10);  // 11.1 degrees
   // the same surface: in the plane, the area, every triangle turned up, conforming,
   // the same boundary, and the file's triangle labels
   double area = 0;
@@ -152,6 +143,6 @@ TEST_CASE("long edges: where no two triangles share a plane (a scan), the bisect
   TriangleSoup bent = sliver_strip(0.01);
   split_long_edges(bent, 0.25);
   CHECK(bent.triangles.size() > 2000);              // 2186
-  CHECK(smallest_angle_of(bent) < 3 * M_PI / 180);  // 1.9 degrees
+  CHECK(triangle_quality(bent).min_angle_deg < 3);  // 1.9 degrees
   CHECK(bent.triangle_labels.empty());              // none read, none made
 }
