@@ -555,6 +555,23 @@ std::vector<char> farther_than(const std::vector<double>& distance, double least
   return out;
 }
 
+/// The vertex nearest v (straight line) that is `eligible` and not `taken`: v
+/// itself when it is; -1 when none is.
+int nearest_free(const TriangleSoup& soup, const std::vector<char>& eligible, const std::vector<char>& taken, int v) {
+  const Vec3& at = soup.points[static_cast<std::size_t>(v)];
+  int nearest = -1;
+  double nearest_distance = 0;
+  for (std::size_t w = 0; w < soup.points.size(); ++w) {
+    if (!eligible[w] || taken[w]) continue;
+    const double d = (soup.points[w] - at).squaredNorm();
+    if (nearest < 0 || d < nearest_distance) {
+      nearest = static_cast<int>(w);
+      nearest_distance = d;
+    }
+  }
+  return nearest;
+}
+
 /// The interior cones of ConePlacementOptions::fillet_cones: per convex fillet
 /// corner (fillet_corners.h) at quads of edge `size`, a valence-3 cone at the
 /// vertex nearest the middle of its arc among those `eligible` and not `taken`,
@@ -565,17 +582,7 @@ int place_fillet_cones(const TriangleSoup& soup, double size, const std::vector<
   int carried = 0;
   for (const BoundaryCorner& fillet : fillet_corners(soup, size)) {
     if (!convex_fillet(fillet)) continue;
-    const Vec3& at = soup.points[static_cast<std::size_t>(fillet.vertex)];
-    int nearest = -1;
-    double nearest_distance = 0;
-    for (std::size_t v = 0; v < soup.points.size(); ++v) {
-      if (!eligible[v] || taken[v]) continue;
-      const double d = (soup.points[v] - at).squaredNorm();
-      if (nearest < 0 || d < nearest_distance) {
-        nearest = static_cast<int>(v);
-        nearest_distance = d;
-      }
-    }
+    const int nearest = nearest_free(soup, eligible, taken, fillet.vertex);
     if (nearest < 0) continue;  // no room: the greedy placement takes its turn
     cones.push_back({nearest, 3});
     pinned[static_cast<std::size_t>(nearest)] = 1;
@@ -681,7 +688,21 @@ std::vector<Cone> place_cones(const ConeMetricSolver& solver, double size, const
       throw Error(ErrorCode::unsupported,
                   fmt::format("the cross field has {} singularities, more than the {:.0f} cones allowed",
                               singular.size(), allowed));
-    cones.insert(cones.end(), singular.begin(), singular.end());
+    // each as near where the field puts it as field_boundary_distance quads from
+    // the boundary and field_cone_spacing from the others allow
+    const std::vector<char> field_eligible = eligible_beyond(options.field_boundary_distance * size);
+    const double field_spacing = options.field_cone_spacing * size;
+    for (Cone c : singular) {
+      c.vertex = nearest_free(soup, field_eligible, taken, c.vertex);
+      if (c.vertex < 0)
+        throw Error(ErrorCode::unsupported,
+                    fmt::format("no inner vertex is {:g} quads from the boundary and {:g} from the other cones to "
+                                "take the cross field's singularities",
+                                options.field_boundary_distance, options.field_cone_spacing));
+      cones.push_back(c);
+      taken[static_cast<std::size_t>(c.vertex)] = 1;
+      mark_within(soup.points, soup.points[static_cast<std::size_t>(c.vertex)], field_spacing, 1, taken);
+    }
     deficit = 0;
   }
   // the fillets' cones first, kept where they are (`pinned`)
@@ -797,7 +818,10 @@ std::vector<Cone> place_cones(const ConeMetricSolver& solver, double size, const
                              options.cone_separation, closest, set);
     }
   };
-  settle(cones, pinned);
+  // (not the field's singularities: each loop already turns whole quarter turns in
+  // the field, and the moves away from where it put them spread the sizes; the
+  // spanner's: from 100% of the quads in the size band to 5% of the area)
+  if (greedy) settle(cones, pinned);
   if (greedy && options.pair_band_goal > 0) {
     const int interior = static_cast<int>(cones.size() - corner_count);
     add_cone_pairs(soup, adjacency, solver, curvature, area, eligible, spacing, boundary_room(), size, settle, options,

@@ -64,6 +64,16 @@ struct ConePlacementOptions {
   /// each other (quads; never farther than the two above).
   double narrow_boundary_distance = 1.5;
   double narrow_cone_spacing = 2.0;
+  /// With InteriorCones::cross_field, a singularity of the field nearer the
+  /// boundary than this (quads) goes to the nearest vertex this far from it and
+  /// field_cone_spacing from the singularities placed before it. The field puts
+  /// them where its crosses turn fastest, a triangle from a concave fillet's foot
+  /// or a slot's rounded end, where the cone and the boundary's lattice line
+  /// compete: 2-8 folded triangles on a plate with two slots, a spanner and a
+  /// square flange; moved, none. (Further, 1.5 and 2 quads, the spanner's narrow
+  /// jaws have no room for them, and the metric's quads reach 10^3 x the size.)
+  double field_boundary_distance = 1.0;
+  double field_cone_spacing = 1.5;
   /// A valence-5 cone the corners leave may go on the boundary, as a straight
   /// boundary point in three quads, where no vertex that may take an interior cone
   /// is within boundary_distance + 1 quads along the edges and the quads are

@@ -37,6 +37,11 @@ struct QuadAngleSmoothingOptions {
   /// A quad's deviation from S may grow up to this (or stay where it was, if that
   /// was more); 0: no check.
   double max_deviation = 0;
+  /// A quad's mean edge may not cross this (from at most this before to above it
+  /// after); 0: no check. The largest quad the size band allows: a plate with two
+  /// slots, its quads within 2.97 x the size as mapped, had one at 3.01 x after
+  /// the moves.
+  double max_mean_edge = 0;
   /// A point moves only while a corner of its quads is this far from 90 degrees
   /// or farther: the corners of a point within it cannot gain more, and such points
   /// are most of a fine grid (issue 21: the sweep's cost follows the quads that

@@ -14,6 +14,8 @@ namespace qm {
 /// The band's ends, as multiples of the target size.
 constexpr double size_band_low = 0.5;
 constexpr double size_band_high = 2.0;
+/// The largest quad issue 18's acceptance allows, as a multiple of the target size.
+constexpr double size_ratio_limit = 3.0;
 
 struct SizeBand {
   std::size_t quads = 0;       ///< faces with 4 corners measured

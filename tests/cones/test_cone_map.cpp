@@ -412,6 +412,46 @@ TEST_CASE("the cross-field placement on a plate with two holes: the field's sing
   check_unfolded_quads(soup, adjacency, cones, 1.75, {-1, interior});
 }
 
+TEST_CASE("the cross-field placement moves the field's singularities a quad off the boundary: a plate with two "
+          "slots maps unfolded" * doctest::test_suite("slow")) {
+  // examples/parts/plate-two-slots.geo at 1.5% of its diagonal: the field puts
+  // singularities a triangle from the slots' rounded corners, where the cone and
+  // the boundary's lattice line compete and the map folds
+  const double size = 0.015 * std::hypot(150.0, 100.0);
+  const TriangleSoup soup = example_at("parts/plate-two-slots.geo", size);
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  // the straight-line distance from each interior cone to the nearest boundary vertex
+  const auto nearest_to_boundary = [&](const std::vector<Cone>& cones) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const Cone& c : cones) {
+      if (adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)]) continue;
+      for (std::size_t v = 0; v < soup.points.size(); ++v)
+        if (adjacency.boundary_vertex[v])
+          nearest = std::min(nearest, (soup.points[v] - soup.points[static_cast<std::size_t>(c.vertex)]).norm());
+    }
+    return nearest;
+  };
+  ConePlacementOptions where_the_field_puts_them;
+  where_the_field_puts_them.interior = InteriorCones::cross_field;
+  where_the_field_puts_them.field_boundary_distance = 0;
+  const std::vector<Cone> raw = place_cones(soup, adjacency, size, where_the_field_puts_them);
+  CHECK(nearest_to_boundary(raw) < 0.5 * size);
+  CHECK(cone_map(soup, adjacency, raw, size).report.inverted_triangles > 0);
+  ConePlacementOptions options;
+  options.interior = InteriorCones::cross_field;
+  const std::vector<Cone> cones = place_cones(soup, adjacency, size, options);
+  REQUIRE(cones.size() == raw.size());
+  int interior = 0, interior_turns = 0;
+  for (const Cone& c : cones)
+    if (!adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)]) {
+      ++interior;
+      interior_turns += 4 - c.quads;
+    }
+  CHECK(interior_turns == -12);  // chi = -2 and four convex corners: -8 - 4
+  CHECK(nearest_to_boundary(cones) >= 0.8 * size);
+  check_unfolded_quads(soup, adjacency, cones, size, {-2, interior});
+}
+
 TEST_CASE("a T-plate: cones placed farther from the boundary and apart map without folds, corners right" *
           doctest::test_suite("slow")) {
   // examples/t-plate-two-holes.geo: six convex and two concave corners, chi = -1:

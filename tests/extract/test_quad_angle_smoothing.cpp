@@ -7,6 +7,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace qm;
@@ -98,4 +99,39 @@ TEST_CASE("angle smoothing leaves right angles alone and stays within max_move")
   const QuadAngleSmoothingReport report = smooth_quad_angles(surface, q, test::unit_square_boundary(q), {}, options);
   CHECK(report.angle_dev_after < report.angle_dev_before);
   for (std::size_t v = 0; v < q.points.size(); ++v) CHECK((q.points[v] - jittered.points[v]).norm() <= 0.005 + 1e-12);
+}
+
+TEST_CASE("angle smoothing lets no quad's mean edge cross max_mean_edge") {
+  const TriangleSoup surface = test::grid(n);
+  const LatticeQuads jittered = jittered_grid();
+  const auto mean_edges = [](const LatticeQuads& q) {
+    std::vector<double> out;
+    for (const auto& quad : q.quads) {
+      double sum = 0;
+      for (std::size_t k = 0; k < 4; ++k)
+        sum += (q.points[static_cast<std::size_t>(quad[(k + 1) % 4])] - q.points[static_cast<std::size_t>(quad[k])])
+                   .norm();
+      out.push_back(sum / 4);
+    }
+    return out;
+  };
+  const std::vector<double> before = mean_edges(jittered);
+  // unbounded, the quad that grows most: a limit half-way through its growth,
+  // which it crosses unless the moves that grow it are put back
+  LatticeQuads unbounded = jittered;
+  smooth_quad_angles(surface, unbounded, test::unit_square_boundary(unbounded), {});
+  const std::vector<double> grown = mean_edges(unbounded);
+  std::size_t most = 0;
+  for (std::size_t q = 0; q < before.size(); ++q)
+    if (grown[q] - before[q] > grown[most] - before[most]) most = q;
+  REQUIRE(grown[most] > before[most] * 1.01);
+  QuadAngleSmoothingOptions options;
+  options.max_mean_edge = 0.5 * (before[most] + grown[most]);
+  LatticeQuads bounded = jittered;
+  const QuadAngleSmoothingReport report =
+      smooth_quad_angles(surface, bounded, test::unit_square_boundary(bounded), {}, options);
+  CHECK(report.angle_dev_after <= report.angle_dev_before);
+  const std::vector<double> after = mean_edges(bounded);
+  for (std::size_t q = 0; q < before.size(); ++q)
+    if (before[q] <= options.max_mean_edge) CHECK(after[q] <= options.max_mean_edge);
 }

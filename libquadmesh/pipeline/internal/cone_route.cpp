@@ -96,6 +96,12 @@ std::vector<ConePlacementOptions> fillet_placements() {
   return out;
 }
 
+ConePlacementOptions cross_field_placement() {
+  ConePlacementOptions field;
+  field.interior = InteriorCones::cross_field;
+  return field;
+}
+
 std::vector<ConePlacementOptions> fallback_placements(bool some_sound) {
   if (some_sound) return {nearer_placement()};
   ConePlacementOptions narrow;
@@ -182,7 +188,7 @@ Candidate cone_quads(const FormSetup& setup, std::vector<Cone> cones, Stages& st
 }
 
 /// The largest quad size (x the requested size) the acceptance allows (issue 18).
-constexpr double max_size_ratio = 3.0;
+constexpr double max_size_ratio = size_ratio_limit;
 
 SizeBand size_band(const QuadMeshResult& r) {
   if (r.quads.quads.empty() || !(r.size_requested > 0)) return {};
@@ -581,12 +587,12 @@ std::optional<ConeCandidate> centred_candidate(const FormSetup& setup, const Qua
   return centred;
 }
 
-/// The cone route's candidate: the placements in turn, until one gives sound quads
-/// (cramped cones fold the map). Throws qm::Error with the first placement's
-/// failure when none gives quads.
-ConeCandidate cone_candidate(const FormSetup& form_setup, const QuadMeshOptions& options, SurfaceTopology input,
-                             Stages& stages) {
-  const FormSetup setup = turned_boundary_setup(form_setup);
+/// The greedy (or the asked) placements' candidate on `setup` (turned_boundary_setup):
+/// the placements in turn, until one gives sound quads (cramped cones fold the
+/// map), then a lattice centred or finer. Throws qm::Error with the first
+/// placement's failure when none gives quads.
+ConeCandidate placements_candidate(const FormSetup& setup, const QuadMeshOptions& options, SurfaceTopology input,
+                                   Stages& stages) {
   std::string failure;
   // every placement, the fallbacks, the capped ones and those with the fillets' cones
   int every_placement = static_cast<int>(cone_placements(InteriorCones::greedy, has_handles(input)).size() + 2 +
@@ -631,6 +637,49 @@ ConeCandidate cone_candidate(const FormSetup& form_setup, const QuadMeshOptions&
       return std::move(*finer);
   }
   return std::move(*cones);
+}
+
+/// Whether `cones`, judged as written, meets what the route asks: sound, in the
+/// size band, every corner in its quad count, within the acceptance's distance.
+bool acceptable(ConeCandidate& cones, const QuadMeshOptions& options, double diagonal, SurfaceTopology input,
+                Stages& stages) {
+  judge_as_written(cones, options, diagonal, input, stages);
+  return sound(cones.candidate.quality, input, options.acceptance) && in_size_band(cones.band) &&
+         corner_mismatches(cones.candidate.result) == 0 && cones.distance <= options.acceptance.max_hausdorff_relative;
+}
+
+/// The quads of cross_field_placement(), or nothing when it throws.
+std::optional<ConeCandidate> field_candidate(const FormSetup& setup, const QuadMeshOptions& options, Stages& stages) {
+  ConeAttempt attempt = run_attempt(setup, cross_field_placement(), stages, 1.0, options.smoothing);
+  if (attempt.unexpected) std::rethrow_exception(attempt.unexpected);
+  if (!attempt.candidate) return std::nullopt;
+  ConeCandidate out;
+  out.candidate = std::move(*attempt.candidate);
+  out.band = size_band(out.candidate.result);
+  return out;
+}
+
+/// The cone route's candidate: placements_candidate's (the greedy placements,
+/// then a lattice centred or finer); where that is not acceptable, greedy, the
+/// cross field's singularities (cross_field_placement), kept when they are.
+/// Throws qm::Error with the first placement's failure when neither gives quads.
+ConeCandidate cone_candidate(const FormSetup& form_setup, const QuadMeshOptions& options, SurfaceTopology input,
+                             Stages& stages) {
+  const FormSetup setup = turned_boundary_setup(form_setup);
+  std::optional<ConeCandidate> placed;
+  std::string failure;
+  try {
+    placed = placements_candidate(setup, options, input, stages);
+    if (acceptable(*placed, options, setup.diagonal, input, stages)) return std::move(*placed);
+  } catch (const Error& e) {
+    failure = e.what();
+  }
+  if (options.cone_placement == ConePlacement::greedy) {
+    std::optional<ConeCandidate> field = field_candidate(setup, options, stages);
+    if (field && acceptable(*field, options, setup.diagonal, input, stages)) return std::move(*field);
+  }
+  if (!placed) throw Error(ErrorCode::unsupported, failure);
+  return std::move(*placed);
 }
 
 }  // namespace

@@ -108,6 +108,17 @@ std::vector<ConePlacementOptions> capped_placements();
 /// and 2.6 x.
 std::vector<ConePlacementOptions> fillet_placements();
 
+/// Tried, greedy, when the greedy placements (and the lattices centred or finer)
+/// give nothing acceptable: the interior cones at the smoothest cross field's singularities
+/// (InteriorCones::cross_field), moved off the boundary (field_boundary_distance).
+/// CAD parts whose greedy cones leave the sizes off: a square flange with
+/// rounded corners, a central bore and four bolt holes (greedy 78-82% in the size
+/// band, the Abel quads 89%; the field's 24 cones 100%), a plate with two slots
+/// (the largest quad 3.0 x; the field's 1.4 x) and a spanner (every greedy
+/// placement's metric 10^5 x the size at the jaw; the field's 100%). On scans the
+/// field's singularities are many and fold the maps, so it comes last.
+ConePlacementOptions cross_field_placement();
+
 /// A placement tried after cone_placements() (greedy; fallback_placements) when
 /// some gave sound quads but none of those had size_band_goal of them in the size band: interior cones
 /// 1.2 quads from the boundary and 1.7 apart. Round a hole little wider than a

@@ -1,6 +1,7 @@
 #include "libquadmesh/pipeline/internal/quad_improvement.h"
 
 #include "libquadmesh/pipeline/internal/deviation_budget.h"
+#include "libquadmesh/quality/size_band.h"
 
 namespace qm {
 
@@ -59,6 +60,7 @@ void improve_quads(QuadMeshResult& best, const QuadMeshOptions& options, Stages&
     QuadAngleSmoothingOptions angles;
     angles.max_move = max_move_fraction * best.size_requested;
     angles.max_deviation = best.max_deviation > 0 ? best.max_deviation : max_move_fraction * best.size_requested;
+    angles.max_mean_edge = size_ratio_limit * best.size_requested;
     best.angle_smoothing = smooth_quad_angles(best.surface, best.quads, best.boundary_loop_of_point, fitted, angles);
   }
 }
