@@ -60,7 +60,9 @@ void improve_quads(QuadMeshResult& best, const QuadMeshOptions& options, Stages&
     QuadAngleSmoothingOptions angles;
     angles.max_move = max_move_fraction * best.size_requested;
     angles.max_deviation = best.max_deviation > 0 ? best.max_deviation : max_move_fraction * best.size_requested;
-    angles.max_mean_edge = size_ratio_limit * best.size_requested;
+    // the cones' quads kept within the largest size the acceptance allows (the
+    // Abel quads, `abel` unchanged, are far larger where they are large)
+    if (cones) angles.max_mean_edge = size_ratio_limit * best.size_requested;
     best.angle_smoothing = smooth_quad_angles(best.surface, best.quads, best.boundary_loop_of_point, fitted, angles);
   }
 }
