@@ -7,6 +7,7 @@
 #include "libquadmesh/extract/quad_smoothing.h"
 #include "libquadmesh/quality/quad_quality.h"
 #include "libquadmesh/quality/internal/triangle_tree.h"
+#include "libquadmesh/quality/size_band.h"
 
 #include <Eigen/Geometry>
 
@@ -159,22 +160,8 @@ struct Before {
   std::vector<double> jacobian;  ///< per quad, sound_scaled_jacobian
   Distances distances;           ///< empty when max_deviation is 0
   std::vector<int> watched;      ///< the vertices of S whose distance is watched
-  std::vector<double> mean_edge;  ///< per quad; empty when max_mean_edge is 0
+  std::vector<double> mean_edge;  ///< per quad (quad_size_ratios at 1); empty when max_mean_edge is 0
 };
-
-/// Per quad, the mean length of its four sides.
-std::vector<double> mean_edges(const LatticeQuads& quads) {
-  std::vector<double> out(quads.quads.size(), 0);
-  for (std::size_t q = 0; q < out.size(); ++q) {
-    const auto& quad = quads.quads[q];
-    for (std::size_t k = 0; k < quad.size(); ++k)
-      out[q] += (quads.points[static_cast<std::size_t>(quad[(k + 1) % quad.size()])] -
-                 quads.points[static_cast<std::size_t>(quad[k])])
-                    .norm() /
-                static_cast<double>(quad.size());
-  }
-  return out;
-}
 
 /// The quads worse for the moves (see below; a quad may be listed more than once).
 std::vector<std::size_t> worse_quads(const TriangleSoup& surface, const TriangleTree& tree, const LatticeQuads& quads,
@@ -184,7 +171,7 @@ std::vector<std::size_t> worse_quads(const TriangleSoup& surface, const Triangle
   for (std::size_t q = 0; q < jacobian.size(); ++q)
     if (jacobian[q] < std::min(before.jacobian[q], options.keep_jacobian)) out.push_back(q);
   if (options.max_mean_edge > 0) {
-    const std::vector<double> mean_edge = mean_edges(quads);
+    const std::vector<double> mean_edge = quad_size_ratios(polygon_mesh(quads), 1.0);
     for (std::size_t q = 0; q < mean_edge.size(); ++q)
       if (before.mean_edge[q] <= options.max_mean_edge && mean_edge[q] > options.max_mean_edge) out.push_back(q);
   }
@@ -240,7 +227,7 @@ QuadAngleSmoothingReport smooth_quad_angles(const TriangleSoup& surface, Lattice
   before.jacobian = sound_scaled_jacobians(polygon_mesh(moves.original()));
   if (options.max_deviation > 0) before.distances = distances(surface, tree, moves.original(), nullptr);
   before.watched = watched_vertices(before.distances, options.max_deviation);
-  if (options.max_mean_edge > 0) before.mean_edge = mean_edges(moves.original());
+  if (options.max_mean_edge > 0) before.mean_edge = quad_size_ratios(polygon_mesh(moves.original()), 1.0);
   // Moves were judged with the normals of the start of their round, and each with
   // its neighbours where they were then; a point sliding along a curved part makes
   // its quads cut across S, or leaves a tip of S farther from them. The quads
