@@ -677,6 +677,7 @@ std::vector<Cone> place_cones(const ConeMetricSolver& solver, double size, const
     // when the field meets every corner as corner_cones counts it
     CrossFieldOptions field_options;
     field_options.length = size;
+    field_options.boundary_quads = quads_per_vertex(adjacency, cones);
     const std::vector<Cone> singular = field_singularities(smooth_cross_field(soup, adjacency, field_options));
     int carried = 0;
     for (const Cone& c : singular) carried += 4 - c.quads;

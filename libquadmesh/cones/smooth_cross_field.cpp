@@ -38,6 +38,45 @@ Complex transport(const std::vector<CornerValues>& frames, const TriangleSoup& s
 
 double face_area(const CornerValues& c) { return 0.5 * std::abs(image_area2(c)); }
 
+/// Holds the crosses of the triangles round each boundary vertex whose quad count
+/// the field might not take by itself (CrossFieldOptions::boundary_quads): from
+/// the boundary edge leaving v to the one arriving (counter-clockwise, angle a
+/// apart), the cross turns by a - q pi/2 against the surface, in equal steps from
+/// one triangle to the next (m triangles: m + 1 steps, the first and the last into
+/// the crosses held along the two edges beyond). A triangle round two such
+/// vertices keeps the first one's.
+void hold_corner_turns(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                       const std::vector<CornerValues>& frames, const CrossFieldOptions& options,
+                       SmoothCrossField& out) {
+  std::vector<char> turned(soup.triangles.size(), 0);
+  for (std::size_t v = 0; v < options.boundary_quads.size() && v < soup.points.size(); ++v) {
+    if (!adjacency.boundary_vertex[v] || adjacency.vertex_faces[v].empty()) continue;
+    const VertexRing ring = vertex_ring(soup, adjacency, static_cast<int>(v));
+    const std::vector<double> angles = ring_angles(soup, ring, static_cast<int>(v));
+    double angle = 0;
+    for (double a : angles) angle += a;
+    const int quads = options.boundary_quads[v];
+    const double turn = angle - quads * quarter_turn;
+    const bool nearest = quads == static_cast<int>(std::lround(angle / quarter_turn));
+    if (nearest && std::abs(turn) < quarter_turn / 2 - options.corner_hold_margin) continue;
+    const double steps = static_cast<double>(ring.faces.size() + 1);
+    double from_start = 0;  // the angle round v of the edge v -> neighbours[k]
+    for (std::size_t k = 0; k < ring.faces.size(); ++k) {
+      const auto f = static_cast<std::size_t>(ring.faces[k]);
+      const double edge_angle = from_start;
+      from_start += angles[k];
+      if (turned[f]) continue;
+      turned[f] = 1;
+      // the cross at turn (k + 1) / steps from the leaving edge's, in f's frame
+      // through the edge v -> neighbours[k], edge_angle round v from that edge
+      const Complex edge = edge_direction(frames[f], soup.triangles[f], static_cast<int>(v), ring.neighbours[k]);
+      const double cross = turn * static_cast<double>(k + 1) / steps - edge_angle;
+      out.psi[f] = std::pow(edge / std::abs(edge) * std::polar(1.0, cross), 4);
+      out.held[f] = 1;
+    }
+  }
+}
+
 }  // namespace
 
 SmoothCrossField smooth_cross_field(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
@@ -65,6 +104,7 @@ SmoothCrossField smooth_cross_field(const TriangleSoup& soup, const SurfaceAdjac
   }
   if (std::none_of(out.held.begin(), out.held.end(), [](char h) { return h != 0; }))
     throw Error(ErrorCode::unsupported, "the cross field needs a boundary to align to");
+  hold_corner_turns(soup, adjacency, frames, options, out);
 
   // the free triangles' unknowns, and E's Hermitian matrix on them
   std::vector<int> unknown(faces, -1);

@@ -46,6 +46,19 @@ struct CrossFieldOptions {
   double length = 1.0;
   /// Diffusion-and-normalization steps after the linear minimizer (0: none).
   int diffusion_steps = 20;
+  /// Per vertex, the quads each boundary vertex is to be in (quads_per_vertex of
+  /// the corners' cones); empty: the field's own choice. Going round a boundary
+  /// vertex of angle a in q quads, the cross turns by a - q pi/2 against the
+  /// surface; left to itself it turns by the least such angle, so a corner near
+  /// half-way between two counts (135, 225 degrees) may get the other one, and the
+  /// interior singularities then carry a quarter turn more or less than the
+  /// corners leave. Where q is not the nearest count, or nearly not
+  /// (corner_hold_margin), the crosses of the vertex's triangles are held, turning
+  /// by a - q pi/2 from one boundary edge to the other in equal steps (a vertex in
+  /// m triangles: m + 1 steps, each unambiguous while below pi/4).
+  std::vector<int> boundary_quads;
+  /// Radians: a count within this of half-way is held too.
+  double corner_hold_margin = 0.1;
 };
 
 /// Precondition: an oriented, connected soup with at least one boundary loop.

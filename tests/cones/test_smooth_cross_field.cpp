@@ -98,3 +98,35 @@ TEST_CASE("plate, T-plate and a curved shell with holes: indices add up to what 
     MESSAGE(name, ": ", field_singularities(field).size(), " singularities");
   }
 }
+
+TEST_CASE("a field held to the corners' counts: a square corner in two quads leaves a valence-3 singularity inside") {
+  // left to itself the field turns by the least angle at each corner: a square's
+  // four corners in one quad each, no singularity. Asked for one corner in two
+  // quads (a straight boundary's count), the field's crosses round it turn by a
+  // quarter turn against the corner's, and the interior carries the quarter turn
+  // Gauss-Bonnet leaves: 4 chi - sum (2 - q) = 4 - 3. (The corners (0, 0) and
+  // (1, 1) lie in two triangles: the quarter turn goes in three steps of 30
+  // degrees; in the one triangle at the other two it would be two steps of 45, a
+  // tie either way.)
+  const int n = 8;
+  const TriangleSoup soup = test::grid(n);
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  const std::vector<int> corners{0, n, n * (n + 1), n * (n + 1) + n};
+  CrossFieldOptions options;
+  options.length = 0.25;
+  std::vector<Cone> cones;
+  for (int v : corners) cones.push_back({v, 1});
+  options.boundary_quads = quads_per_vertex(adjacency, cones);
+  CHECK(field_singularities(smooth_cross_field(soup, adjacency, options)).empty());
+  for (int turned : {corners[0], corners[3]}) {
+    CAPTURE(turned);
+    cones.clear();
+    for (int v : corners) cones.push_back({v, v == turned ? 2 : 1});
+    options.boundary_quads = quads_per_vertex(adjacency, cones);
+    const SmoothCrossField field = smooth_cross_field(soup, adjacency, options);
+    const std::vector<Cone> singular = field_singularities(field);
+    REQUIRE(singular.size() == 1);
+    CHECK(singular[0].quads == 3);
+    CHECK(index_sum(field) == 1);
+  }
+}
