@@ -422,7 +422,7 @@ TEST_CASE("parts whose greedy cones leave the sizes off take the smoothest cross
 
 TEST_CASE("corners half-way between two counts: the field held to the corners' own counts carries what they leave" *
           doctest::test_suite("slow")) {
-  // the Z-plate's corners of 45 and 225 degrees lie half-way between two quad
+  // the Z-plate's corners of 225 and 315 degrees lie half-way between two quad
   // counts: left to itself the cross field turns each the shorter way, which is
   // not always corner_cones' count, and on the surface the cone route places on
   // its singularities carry another number of quarter turns than the corners
