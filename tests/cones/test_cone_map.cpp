@@ -715,3 +715,56 @@ TEST_CASE("aqua-center: valence-3/5 pairs bring the metric's quad size into the 
   CHECK(euler_and_singular(q) == std::pair{euler_characteristic(adjacency), static_cast<int>(cones.size())});
   check_cone_quads(q, cones);
 }
+
+TEST_CASE("a hexagonal flange whose corners leave more valence-5 cones than allowed: its bolt holes made squares") {
+  // examples/parts/hex-flange-six-bolts.geo at 1.5% of the diagonal: chi = -6 and
+  // six 120-degree corners in one quad each leave 4 chi - 6 = -30 quarter turns to
+  // the interior, more than the 24 cones allowed. Each bolt hole (11 quads round,
+  // no corner on it) made a square on the lattice by four boundary cones in three
+  // quads takes four of them; the bore (45 quads round) stays round
+  const double size = 0.015 * std::hypot(240 / std::sqrt(3.0), 120.0);
+  const TriangleSoup soup = example_at("parts/hex-flange-six-bolts.geo", size);
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  REQUIRE(euler_characteristic(adjacency) == -6);
+  REQUIRE(corner_cones(soup, size).size() == 6);
+  ConePlacementOptions options;
+  options.square_crowded_holes = false;
+  CHECK_THROWS_WITH_AS(place_cones(soup, adjacency, size, options), doctest::Contains("leave 30 quarter turns"),
+                       Error);
+  options = ConePlacementOptions{};
+  options.pair_band_goal = 0;  // the cones the corners and holes leave, no pairs
+  const std::vector<Cone> cones = place_cones(soup, adjacency, size, options);
+  // per boundary loop, its cones: 4 on each bolt hole, 90 degrees apart round it
+  std::map<int, std::vector<Cone>> on_loop;
+  int interior_turns = 0;
+  for (const Cone& c : cones) {
+    const int loop = adjacency.loop_of_vertex[static_cast<std::size_t>(c.vertex)];
+    if (loop >= 0)
+      on_loop[loop].push_back(c);
+    else
+      interior_turns += 4 - c.quads;
+  }
+  int squares = 0;
+  for (const auto& [loop, on] : on_loop) {
+    if (on.size() != 4 || on.front().quads != 3) continue;
+    ++squares;
+    // the hole's centre: the mean of its vertices (a circle of radius 5)
+    Vec3 centre = Vec3::Zero();
+    const std::vector<int>& hole = adjacency.boundary_loops[static_cast<std::size_t>(loop)];
+    for (int v : hole) centre += soup.points[static_cast<std::size_t>(v)];
+    centre /= static_cast<double>(hole.size());
+    CHECK(std::abs(centre.head<2>().norm() - 42) < 0.1);
+    // the nearest other boundary is the flat the hole faces (13 away; the bore 17):
+    // the square's corners at 45 degrees to its normal, the radial direction
+    const Vec3 radial = Vec3(centre.x(), centre.y(), 0).normalized();
+    for (std::size_t k = 0; k < 4; ++k) {
+      const Vec3 a = soup.points[static_cast<std::size_t>(on[k].vertex)] - centre;
+      const Vec3 b = soup.points[static_cast<std::size_t>(on[(k + 1) % 4].vertex)] - centre;
+      CHECK(std::abs(std::acos(a.normalized().dot(b.normalized())) - M_PI / 2) < 0.25);
+      const double from_radial = std::acos(std::clamp(a.normalized().dot(radial), -1.0, 1.0));
+      CHECK(std::abs(std::remainder(from_radial - M_PI / 4, M_PI / 2)) < 0.25);
+    }
+  }
+  CHECK(squares == 6);
+  CHECK(interior_turns == -6);
+}

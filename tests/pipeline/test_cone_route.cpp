@@ -457,6 +457,20 @@ TEST_CASE("corners half-way between two counts: the field held to the corners' o
   CHECK(held_field == left);
 }
 
+TEST_CASE("a hexagonal flange whose corners leave more cones than allowed meets every criterion, its bolt holes squares" *
+          doctest::test_suite("slow")) {
+  // refused before (30 quarter turns for 24 cones allowed: the Abel quads kept,
+  // every 120-degree corner in two quads); its six bolt holes squares on the
+  // lattice, six interior cones are left
+  TriangleSoup input;
+  const QuadMeshResult r = mesh_cad_part(test::example("parts/hex-flange-six-bolts.geo"), input);
+  REQUIRE(r.singularities == "cones");
+  const QuadQuality q = quad_quality(polygon_mesh(r.quads), &input, r.size_requested);
+  check_acceptance(q, -6, 8, 0.9, 6);
+  CHECK(q.size_ratio_max <= 3.0);
+  CHECK(q.irregular_interior <= 24);
+}
+
 TEST_CASE("an angle bracket with a bolt hole in each arm and at the heel: the fallback placements mesh it" *
           doctest::test_suite("slow")) {
   // arms 15 wide (8.8 quads at 1.5% of the diagonal), holes of radius 3 (3.5 quads
