@@ -457,7 +457,7 @@ TEST_CASE("corners half-way between two counts: the field held to the corners' o
   CHECK(held_field == left);
 }
 
-TEST_CASE("a hexagonal flange whose corners leave more cones than allowed meets every criterion, its bolt holes squares" *
+TEST_CASE("a hexagonal flange and a perforated plate whose corners leave more cones than allowed: every criterion, the holes squares" *
           doctest::test_suite("slow")) {
   // refused before (30 quarter turns for 24 cones allowed: the Abel quads kept,
   // every 120-degree corner in two quads); its six bolt holes squares on the
@@ -469,6 +469,14 @@ TEST_CASE("a hexagonal flange whose corners leave more cones than allowed meets 
   check_acceptance(q, -6, 8, 0.9, 6);
   CHECK(q.size_ratio_max <= 3.0);
   CHECK(q.irregular_interior <= 24);
+  // a perforated plate: fifteen holes and four right corners leave 60; every hole
+  // a square, no interior cone is left, and the quads are a lattice's
+  const QuadMeshResult plate = mesh_cad_part(test::example("parts/perforated-plate.geo"), input);
+  REQUIRE(plate.singularities == "cones");
+  const QuadQuality p = quad_quality(polygon_mesh(plate.quads), &input, plate.size_requested);
+  check_acceptance(p, -14, 16, 0.99, 4);
+  CHECK(p.irregular_interior == 0);
+  CHECK(p.min_scaled_jacobian > 0.8);
 }
 
 TEST_CASE("an angle bracket with a bolt hole in each arm and at the heel: the fallback placements mesh it" *
