@@ -167,11 +167,12 @@ struct Before {
 std::vector<std::size_t> worse_quads(const TriangleSoup& surface, const TriangleTree& tree, const LatticeQuads& quads,
                                      const Before& before, const QuadAngleSmoothingOptions& options) {
   std::vector<std::size_t> out;
-  const std::vector<double> jacobian = sound_scaled_jacobians(polygon_mesh(quads));
+  const PolygonMesh mesh = polygon_mesh(quads);
+  const std::vector<double> jacobian = sound_scaled_jacobians(mesh);
   for (std::size_t q = 0; q < jacobian.size(); ++q)
     if (jacobian[q] < std::min(before.jacobian[q], options.keep_jacobian)) out.push_back(q);
   if (options.max_mean_edge > 0) {
-    const std::vector<double> mean_edge = quad_size_ratios(polygon_mesh(quads), 1.0);
+    const std::vector<double> mean_edge = quad_size_ratios(mesh, 1.0);
     for (std::size_t q = 0; q < mean_edge.size(); ++q)
       if (before.mean_edge[q] <= options.max_mean_edge && mean_edge[q] > options.max_mean_edge) out.push_back(q);
   }
@@ -224,10 +225,11 @@ QuadAngleSmoothingReport smooth_quad_angles(const TriangleSoup& surface, Lattice
   if (moves.count() == 0) return report;
   // what the moved quads must not come out worse in, measured on the quads as they were
   Before before;
-  before.jacobian = sound_scaled_jacobians(polygon_mesh(moves.original()));
+  const PolygonMesh original = polygon_mesh(moves.original());
+  before.jacobian = sound_scaled_jacobians(original);
   if (options.max_deviation > 0) before.distances = distances(surface, tree, moves.original(), nullptr);
   before.watched = watched_vertices(before.distances, options.max_deviation);
-  if (options.max_mean_edge > 0) before.mean_edge = quad_size_ratios(polygon_mesh(moves.original()), 1.0);
+  if (options.max_mean_edge > 0) before.mean_edge = quad_size_ratios(original, 1.0);
   // Moves were judged with the normals of the start of their round, and each with
   // its neighbours where they were then; a point sliding along a curved part makes
   // its quads cut across S, or leaves a tip of S farther from them. The quads
