@@ -2,6 +2,7 @@
 
 #include "libquadmesh/cones/cone_metric.h"
 #include "libquadmesh/cones/cone_winding.h"
+#include "libquadmesh/cones/tip_scale.h"
 #include "libquadmesh/core/error.h"
 
 #include <cmath>
@@ -54,6 +55,10 @@ ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, co
   for (std::size_t v = 0; v < out.quads.size(); ++v)
     if (!adjacency.boundary_vertex[v] && out.quads[v] != 4)
       scale[static_cast<Eigen::Index>(v)] = ring_mean(soup, adjacency, out.u, v);
+  // an acute corner's singular scale left out near it: the map sheared there
+  // rather than its quads swollen (tip_scale.h)
+  scale += tip_scale_offset(soup, adjacency, target_curvature(adjacency, out.quads), vertex_curvature(soup, adjacency),
+                            scale, size);
   out.map = seamless_map(soup, adjacency, scale, out.field, out.cut, out.quads, size, out.report, order);
   if (out.report.inverted_triangles > 0) out.misturned = misturned_cones(soup, adjacency, out.map, out.quads);
   return out;

@@ -1,6 +1,7 @@
 #include "libquadmesh/cones/cone_metric.h"
 
 #include "libquadmesh/cones/internal/face_geometry.h"
+#include "libquadmesh/cones/tip_scale.h"
 #include "libquadmesh/core/error.h"
 
 #include <Eigen/Geometry>
@@ -191,7 +192,14 @@ Eigen::VectorXd ConeMetricSolver::apply_inverse(const Eigen::VectorXd& x) const 
 }
 
 Eigen::VectorXd ConeMetricSolver::solve(const std::vector<double>& target_curvature,
-                                        const std::vector<double>& surface_curvature) const {
+                                        const std::vector<double>& surface_curvature, double tip_size) const {
+  Eigen::VectorXd u = metric(target_curvature, surface_curvature);
+  if (tip_size > 0) u += tip_scale_offset(soup_, adjacency_, target_curvature, surface_curvature, u, tip_size);
+  return u;
+}
+
+Eigen::VectorXd ConeMetricSolver::metric(const std::vector<double>& target_curvature,
+                                         const std::vector<double>& surface_curvature) const {
   const std::size_t nV = soup_.points.size();
   QM_ASSERT(target_curvature.size() == nV && surface_curvature.size() == nV && nV > 0);
   std::optional<Remembered::Key> key = remembered_->key_of(target_curvature, surface_curvature);

@@ -40,8 +40,10 @@ class ConeMetricSolver {
   ~ConeMetricSolver();
   ConeMetricSolver(const ConeMetricSolver&) = delete;
   ConeMetricSolver& operator=(const ConeMetricSolver&) = delete;
-  /// u for these targets (see cone_metric below).
-  Eigen::VectorXd solve(const std::vector<double>& target_curvature, const std::vector<double>& surface_curvature) const;
+  /// u for these targets (see cone_metric below); with a quad size tip_size > 0,
+  /// the log scale the sizes are judged by: u plus tip_scale_offset (tip_scale.h).
+  Eigen::VectorXd solve(const std::vector<double>& target_curvature, const std::vector<double>& surface_curvature,
+                        double tip_size = 0) const;
   /// (L + epsilon I)^-1 x: u up to its constant, for a right side x that sums to 0.
   Eigen::VectorXd apply_inverse(const Eigen::VectorXd& x) const;
   /// The surface it was made for.
@@ -51,6 +53,9 @@ class ConeMetricSolver {
  private:
   struct Factor;
   struct Remembered;
+  /// u as solve() without a tip radius (remembered by its targets).
+  Eigen::VectorXd metric(const std::vector<double>& target_curvature,
+                         const std::vector<double>& surface_curvature) const;
   const Factor& factor() const;
   const TriangleSoup& soup_;
   const SurfaceAdjacency& adjacency_;

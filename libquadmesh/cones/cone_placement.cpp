@@ -7,6 +7,7 @@
 #include "libquadmesh/cones/cone_metric.h"
 #include "libquadmesh/cones/cross_field.h"
 #include "libquadmesh/cones/fillet_corners.h"
+#include "libquadmesh/cones/internal/edge_distance.h"
 #include "libquadmesh/cones/protrusion_caps.h"
 #include "libquadmesh/cones/smooth_cross_field.h"
 #include "libquadmesh/core/error.h"
@@ -18,7 +19,6 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <queue>
 #include <unordered_map>
 
 namespace qm {
@@ -43,34 +43,6 @@ std::vector<double> vertex_areas(const TriangleSoup& soup) {
     for (int v : t) area[static_cast<std::size_t>(v)] += a / 3;
   }
   return area;
-}
-
-/// Per vertex, the length of the shortest edge path to a vertex marked in
-/// `sources` (Dijkstra; infinity when none is reachable).
-std::vector<double> distance_from(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
-                                  const std::vector<char>& sources) {
-  std::vector<double> distance(soup.points.size(), std::numeric_limits<double>::infinity());
-  using Item = std::pair<double, int>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-  for (std::size_t v = 0; v < soup.points.size(); ++v)
-    if (sources[v]) {
-      distance[v] = 0;
-      queue.push({0.0, static_cast<int>(v)});
-    }
-  while (!queue.empty()) {
-    const auto [d, v] = queue.top();
-    queue.pop();
-    if (d > distance[static_cast<std::size_t>(v)]) continue;
-    for (int f : adjacency.vertex_faces[static_cast<std::size_t>(v)])
-      for (int w : soup.triangles[static_cast<std::size_t>(f)]) {
-        const double dw = d + (soup.points[static_cast<std::size_t>(w)] - soup.points[static_cast<std::size_t>(v)]).norm();
-        if (dw < distance[static_cast<std::size_t>(w)]) {
-          distance[static_cast<std::size_t>(w)] = dw;
-          queue.push({dw, w});
-        }
-      }
-  }
-  return distance;
 }
 
 /// Per vertex, the length of the shortest edge path to the boundary.
@@ -227,12 +199,14 @@ double size_spread(const Eigen::VectorXd& u, const std::vector<double>& area, do
 /// dV = 2 k (g_b - g_a) with g = L^-1 (A (u - mean u)) (L symmetric): one solve
 /// ranks every move. A move is kept when the re-solved V drops and the loops'
 /// turns (LoopTurns) stay within `slack` of whole quarter turns or no worse than
-/// they were. The cones at `pinned` vertices stay.
+/// they were. The cones at `pinned` vertices stay. The sizes are the metric's with
+/// the acute corners' singular part left out for quads of `tip_size` (tip_scale.h;
+/// 0: not).
 void relax_cones_for_size(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const ConeMetricSolver& solver,
                           const LoopTurns& model, const std::vector<double>& curvature,
                           const std::vector<double>& area, const std::vector<char>& eligible,
                           const std::vector<char>& pinned, int separation, double min_distance, int passes,
-                          double slack, std::vector<Cone>& cones) {
+                          double slack, double tip_size, std::vector<Cone>& cones) {
   auto alignment_cost = [&](const std::vector<Cone>& trial) {
     if (adjacency.boundary_loops.size() < 2) return 0.0;
     const std::vector<double> kappa = target_curvature(adjacency, quads_per_vertex(adjacency, trial));
@@ -247,7 +221,7 @@ void relax_cones_for_size(const TriangleSoup& soup, const SurfaceAdjacency& adja
     return c;
   };
   auto metric = [&](const std::vector<Cone>& trial) {
-    return solver.solve(target_curvature(adjacency, quads_per_vertex(adjacency, trial)), curvature);
+    return solver.solve(target_curvature(adjacency, quads_per_vertex(adjacency, trial)), curvature, tip_size);
   };
   Eigen::VectorXd u = metric(cones);
   double mean = 0;
@@ -501,7 +475,8 @@ void add_cone_pairs(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                     const Settle& settle, const ConePlacementOptions& options, int room, std::vector<char> pinned,
                     std::vector<Cone>& cones) {
   auto measure = [&](const std::vector<Cone>& set, Eigen::VectorXd& u) {
-    u = solver.solve(target_curvature(adjacency, quads_per_vertex(adjacency, set)), curvature);
+    u = solver.solve(target_curvature(adjacency, quads_per_vertex(adjacency, set)), curvature,
+                     options.tip_sizes ? size : 0.0);
     std::vector<char> mark(area.size(), 0);
     for (const Cone& c : set) mark[static_cast<std::size_t>(c.vertex)] = 1;
     return metric_band(u, area, mark);
@@ -683,6 +658,7 @@ std::vector<Cone> place_cones(const ConeMetricSolver& solver, double size, const
   const TriangleSoup& soup = solver.soup();
   const SurfaceAdjacency& adjacency = solver.adjacency();
   std::vector<Cone> cones = corner_cones(soup, size, options);
+  const double tip_size = options.tip_sizes ? size : 0.0;  // the sizes' (tip_scale.h)
   int deficit = 4 * euler_characteristic(adjacency);
   for (const Cone& c : cones) deficit -= 2 - c.quads;
   const std::vector<double> area = vertex_areas(soup);
@@ -787,7 +763,8 @@ std::vector<Cone> place_cones(const ConeMetricSolver& solver, double size, const
   while (deficit != 0) {
     // the cones so far, the rest spread over the interior by area
     const std::vector<int> quads = quads_per_vertex(adjacency, cones);
-    const Eigen::VectorXd u = solver.solve(spread_targets(adjacency, quads, area, interior_area, deficit), curvature);
+    const Eigen::VectorXd u =
+        solver.solve(spread_targets(adjacency, quads, area, interior_area, deficit), curvature, tip_size);
     int extreme = -1;
     for (std::size_t v = 0; v < soup.points.size(); ++v)
       if (eligible[v] && !taken[v] && (extreme < 0 || step * u[static_cast<Eigen::Index>(v)] < step * u[extreme]))
@@ -878,7 +855,7 @@ std::vector<Cone> place_cones(const ConeMetricSolver& solver, double size, const
     if (greedy && options.size_relaxation_passes > 0) {
       relax_cones_for_size(soup, adjacency, solver, model, curvature, area, eligible, held,
                            options.cone_separation, closest, options.size_relaxation_passes,
-                           options.relaxation_alignment_slack, set);
+                           options.relaxation_alignment_slack, tip_size, set);
       if (steered)
         align_loops_by_cones(soup, adjacency, model, curvature, eligible, held, options.alignment_rings,
                              options.cone_separation, closest, set);
@@ -896,7 +873,8 @@ std::vector<Cone> place_cones(const ConeMetricSolver& solver, double size, const
   if (options.min_metric_band > 0 || options.max_metric_largest > 0) {
     std::vector<char> placed(area.size(), 0);
     for (const Cone& c : cones) placed[static_cast<std::size_t>(c.vertex)] = 1;
-    const Eigen::VectorXd u = solver.solve(target_curvature(adjacency, quads_per_vertex(adjacency, cones)), curvature);
+    const Eigen::VectorXd u =
+        solver.solve(target_curvature(adjacency, quads_per_vertex(adjacency, cones)), curvature, tip_size);
     const MetricBand band = metric_band(u, area, placed);
     // the largest a quad at a time (half a quad round each vertex)
     const double largest = options.max_metric_largest > 0

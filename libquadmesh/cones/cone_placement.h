@@ -24,6 +24,7 @@
 #include "libquadmesh/cones/boundary_corners.h"
 #include "libquadmesh/cones/cone_set.h"
 #include "libquadmesh/cones/seamless_map.h"
+#include "libquadmesh/cones/tip_scale.h"
 #include "libquadmesh/core/error.h"
 
 #include <Eigen/Core>
@@ -52,6 +53,9 @@ struct ConePlacementOptions {
   /// surface whose corners leave more is refused (qm::Error, unsupported).
   double max_interior_cones = 24;
   double max_interior_cone_share = 0.01;
+  /// The sizes the cones are placed for leave an acute corner's singular scale out
+  /// near it (tip_scale.h), as the map does.
+  bool tip_sizes = true;
   /// Interior cones keep this far from the boundary (in quads of the target size):
   /// nearer, the cone and the boundary line compete for the same lattice row.
   double boundary_distance = 2.0;
