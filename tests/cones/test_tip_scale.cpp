@@ -4,6 +4,7 @@
 #include "libquadmesh/cones/cone_set.h"
 #include "libquadmesh/cones/tip_scale.h"
 #include "libquadmesh/param/internal/surface_adjacency.h"
+#include "tests/support/test_meshes.h"
 
 #include <doctest/doctest.h>
 
@@ -14,26 +15,9 @@ using namespace qm;
 
 namespace {
 
-/// A flat sector of angle `alpha` at the origin: rings 1..rings at radius i, each
-/// of sectors + 1 points on rays alpha j / sectors, the tip (vertex 0) fanned to
-/// ring 1. Vertex 1 + (i - 1)(sectors + 1) + j is ring i, ray j.
-TriangleSoup sector(double alpha, int rings, int sectors) {
-  TriangleSoup soup;
-  soup.points.push_back(Vec3::Zero());
-  for (int i = 1; i <= rings; ++i)
-    for (int j = 0; j <= sectors; ++j) {
-      const double t = alpha * j / sectors;
-      soup.points.push_back(Vec3(i * std::cos(t), i * std::sin(t), 0));
-    }
-  const auto at = [&](int i, int j) { return 1 + (i - 1) * (sectors + 1) + j; };
-  for (int j = 0; j < sectors; ++j) soup.triangles.push_back({0, at(1, j), at(1, j + 1)});
-  for (int i = 1; i < rings; ++i)
-    for (int j = 0; j < sectors; ++j) {
-      soup.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      soup.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  return soup;
-}
+/// A flat sector of angle `alpha` at the origin (test::sector): rings 1..rings at
+/// radius i, each of sectors + 1 points; the tip is vertex 0.
+TriangleSoup sector(double alpha, int rings, int sectors) { return test::sector(alpha, rings, sectors, rings); }
 
 /// The sector's targets: its own curvature everywhere but at the tip, asked in
 /// one quad (a quarter turn).

@@ -18,26 +18,6 @@ using namespace qm;
 
 namespace {
 
-/// A sector of angle `theta` round the origin (the tip, vertex 0): `rings` x
-/// `sectors` polar cells split in two, a fan of triangles at the origin.
-TriangleSoup sector(double theta, int rings, int sectors) {
-  TriangleSoup s;
-  s.points.emplace_back(0.0, 0.0, 0.0);
-  for (int i = 1; i <= rings; ++i)
-    for (int j = 0; j <= sectors; ++j) {
-      const double r = static_cast<double>(i) / rings, t = theta * j / sectors;
-      s.points.emplace_back(r * std::cos(t), r * std::sin(t), 0.0);
-    }
-  auto id = [&](int i, int j) { return i == 0 ? 0 : 1 + (i - 1) * (sectors + 1) + j; };
-  for (int j = 0; j < sectors; ++j) s.triangles.push_back({0, id(1, j), id(1, j + 1)});
-  for (int i = 1; i < rings; ++i)
-    for (int j = 0; j < sectors; ++j) {
-      s.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      s.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  return s;
-}
-
 /// The face map of F(z) at every corner, z = w^a with w the flattened position
 /// (polar angle theta j / sectors of ring index j, distance r): z = r^a e^(i a t).
 FaceMap face_map(const TriangleSoup& s, double theta, int sectors, double a,
@@ -62,7 +42,7 @@ TEST_CASE("tip_leading_coefficient recovers f_0 of h = sum f_n z^n dz, z = w^(pi
     CAPTURE(degrees);
     const double theta = degrees * M_PI / 180;
     const int sectors = 7;
-    const TriangleSoup s = sector(theta, 3, sectors);
+    const TriangleSoup s = test::sector(theta, 3, sectors);
     const SurfaceAdjacency adjacency = surface_adjacency(s);
     const std::vector<BoundaryTip> tips = boundary_tips(s, adjacency, 250 * M_PI / 180);
     REQUIRE(tips.size() == 1);

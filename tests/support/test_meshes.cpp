@@ -81,6 +81,24 @@ TriangleSoup disk(int rings, int sectors) {
   return s;
 }
 
+TriangleSoup sector(double theta, int rings, int sectors, double radius) {
+  TriangleSoup s;
+  s.points.emplace_back(0.0, 0.0, 0.0);
+  for (int i = 1; i <= rings; ++i)
+    for (int j = 0; j <= sectors; ++j) {
+      const double r = radius * static_cast<double>(i) / rings, t = theta * j / sectors;
+      s.points.emplace_back(r * std::cos(t), r * std::sin(t), 0.0);
+    }
+  auto id = [&](int i, int j) { return i == 0 ? 0 : 1 + (i - 1) * (sectors + 1) + j; };
+  for (int j = 0; j < sectors; ++j) s.triangles.push_back({0, id(1, j), id(1, j + 1)});
+  for (int i = 1; i < rings; ++i)
+    for (int j = 0; j < sectors; ++j) {
+      s.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      s.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return s;
+}
+
 TriangleSoup sphere() {
   TriangleSoup s;
   s.points = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};

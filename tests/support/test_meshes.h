@@ -35,6 +35,11 @@ std::string long_arm_bracket_geo();
 TriangleSoup annulus(double r0, double r1, int rings, int sectors);
 /// Planar unit disk: a fan-refined polar grid (genus 0, 1 boundary, chi 1).
 TriangleSoup disk(int rings, int sectors);
+/// A planar sector of angle `theta` and radius `radius` round the origin (the tip,
+/// vertex 0): `rings` x `sectors` polar cells split in two, a fan of triangles at
+/// the origin. Vertex 1 + (i - 1)(sectors + 1) + j is ring i (at radius x i /
+/// rings), ray j (at angle theta j / sectors).
+TriangleSoup sector(double theta, int rings, int sectors, double radius = 1.0);
 /// Octahedron-based sphere (closed, genus 0, chi 2).
 TriangleSoup sphere();
 /// Torus of revolution (closed, genus 1, chi 0).
