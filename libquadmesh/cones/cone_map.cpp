@@ -34,7 +34,9 @@ ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, co
   ConeMap out;
   out.quads = quads_per_vertex(adjacency, cones);
   require_gauss_bonnet(adjacency, out.quads, euler_characteristic(adjacency));
-  out.u = cone_metric(soup, adjacency, target_curvature(adjacency, out.quads), vertex_curvature(soup, adjacency));
+  const std::vector<double> target = target_curvature(adjacency, out.quads);
+  const std::vector<double> curvature = vertex_curvature(soup, adjacency);
+  out.u = cone_metric(soup, adjacency, target, curvature);
   out.field = cone_cross_field(soup, adjacency, out.u);
   if (out.field.misaligned_loop >= 0)
     throw Error(ErrorCode::unsupported,
@@ -57,8 +59,7 @@ ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, co
       scale[static_cast<Eigen::Index>(v)] = ring_mean(soup, adjacency, out.u, v);
   // an acute corner's singular scale left out near it: the map sheared there
   // rather than its quads swollen (tip_scale.h)
-  scale += tip_scale_offset(soup, adjacency, target_curvature(adjacency, out.quads), vertex_curvature(soup, adjacency),
-                            scale, size);
+  scale += tip_scale_offset(soup, adjacency, target, curvature, scale, size);
   out.map = seamless_map(soup, adjacency, scale, out.field, out.cut, out.quads, size, out.report, order);
   if (out.report.inverted_triangles > 0) out.misturned = misturned_cones(soup, adjacency, out.map, out.quads);
   return out;

@@ -53,7 +53,7 @@ class ConeMetricSolver {
  private:
   struct Factor;
   struct Remembered;
-  /// u as solve() without a tip radius (remembered by its targets).
+  /// u as solve() without a tip size (remembered by its targets).
   Eigen::VectorXd metric(const std::vector<double>& target_curvature,
                          const std::vector<double>& surface_curvature) const;
   const Factor& factor() const;

@@ -467,16 +467,16 @@ int square_crowded_holes(const TriangleSoup& soup, const SurfaceAdjacency& adjac
 /// valence-3 cone at the lowest u in the region as the earlier ones leave it, and
 /// those cones pinned: `settle(set, pinned)` moves the others. Each step is
 /// weighed after `settle` has moved the cones (loops aligned, sizes evened), and
-/// kept only when the band improves; at most `room` cones are added.
+/// kept only when the band improves; at most `room` cones are added. The sizes
+/// are judged as relax_cones_for_size judges them (`tip_size`).
 template <class Settle>
 void add_cone_pairs(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const ConeMetricSolver& solver,
                     const std::vector<double>& curvature, const std::vector<double>& area,
                     const std::vector<char>& eligible, double spacing, double boundary_room, double size,
-                    const Settle& settle, const ConePlacementOptions& options, int room, std::vector<char> pinned,
+                    double tip_size, const Settle& settle, const ConePlacementOptions& options, int room, std::vector<char> pinned,
                     std::vector<Cone>& cones) {
   auto measure = [&](const std::vector<Cone>& set, Eigen::VectorXd& u) {
-    u = solver.solve(target_curvature(adjacency, quads_per_vertex(adjacency, set)), curvature,
-                     options.tip_sizes ? size : 0.0);
+    u = solver.solve(target_curvature(adjacency, quads_per_vertex(adjacency, set)), curvature, tip_size);
     std::vector<char> mark(area.size(), 0);
     for (const Cone& c : set) mark[static_cast<std::size_t>(c.vertex)] = 1;
     return metric_band(u, area, mark);
@@ -867,8 +867,8 @@ std::vector<Cone> place_cones(const ConeMetricSolver& solver, double size, const
   if (greedy) settle(cones, pinned);
   if (greedy && options.pair_band_goal > 0) {
     const int interior = static_cast<int>(cones.size() - corner_count);
-    add_cone_pairs(soup, adjacency, solver, curvature, area, eligible, spacing, boundary_room(), size, settle, options,
-                   static_cast<int>(allowed) - interior, pinned, cones);
+    add_cone_pairs(soup, adjacency, solver, curvature, area, eligible, spacing, boundary_room(), size, tip_size, settle,
+                   options, static_cast<int>(allowed) - interior, pinned, cones);
   }
   if (options.min_metric_band > 0 || options.max_metric_largest > 0) {
     std::vector<char> placed(area.size(), 0);
