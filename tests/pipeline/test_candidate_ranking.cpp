@@ -126,21 +126,27 @@ TEST_CASE("ranking: the measurement of a result, once, and its sound Jacobian as
 TEST_CASE("singularities auto: the cone result replaces the Abel one only when sound and better in band or corners") {
   const AcceptanceCriteria criteria;
   const CandidateQuality cones = sound();
+  auto band = [](double share, double largest = 1.5) { return SizeBand{100, share, largest, 0.6}; };
   // more quads in the size band, by more than a point
-  CHECK(cones_replace(cones, 0.95, 0.80, 0, 0, annulus, criteria));
-  CHECK_FALSE(cones_replace(cones, 0.805, 0.80, 0, 0, annulus, criteria));
+  CHECK(cones_replace(cones, band(0.95), band(0.80), 0, 0, annulus, criteria));
+  CHECK_FALSE(cones_replace(cones, band(0.805), band(0.80), 0, 0, annulus, criteria));
   // the corners right (one quad per 90 degrees) while the band keeps its goal
-  CHECK(cones_replace(cones, 0.97, 0.98, 0, 4, annulus, criteria));
-  CHECK_FALSE(cones_replace(cones, size_band_goal - 0.05, 0.86, 0, 4, annulus, criteria));
-  CHECK_FALSE(cones_replace(cones, 0.97, 0.98, 2, 2, annulus, criteria));
+  CHECK(cones_replace(cones, band(0.97), band(0.98), 0, 4, annulus, criteria));
+  CHECK_FALSE(cones_replace(cones, band(size_band_goal - 0.05), band(0.86), 0, 4, annulus, criteria));
+  CHECK_FALSE(cones_replace(cones, band(0.97), band(0.98), 2, 2, annulus, criteria));
+  // the band met where the Abel quads have one above 3 x the size, the corners no worse
+  CHECK(cones_replace(cones, band(0.95, 2.4), band(0.96, 3.7), 0, 0, annulus, criteria));
+  CHECK_FALSE(cones_replace(cones, band(0.95, 3.1), band(0.96, 3.7), 0, 0, annulus, criteria));
+  CHECK_FALSE(cones_replace(cones, band(0.95, 2.4), band(0.96, 2.9), 0, 0, annulus, criteria));
+  CHECK_FALSE(cones_replace(cones, band(0.95, 2.4), band(0.96, 3.7), 1, 0, annulus, criteria));
   // never when unsound, however good the band
   CandidateQuality dropped = sound();
   dropped.dropped_cells = 1;
-  CHECK_FALSE(cones_replace(dropped, 1.0, 0.5, 0, 4, annulus, criteria));
+  CHECK_FALSE(cones_replace(dropped, band(1.0), band(0.5), 0, 4, annulus, criteria));
   CandidateQuality inverted = sound();
   inverted.inverted = 1;
-  CHECK_FALSE(cones_replace(inverted, 1.0, 0.5, 0, 4, annulus, criteria));
+  CHECK_FALSE(cones_replace(inverted, band(1.0), band(0.5), 0, 4, annulus, criteria));
   CandidateQuality torn = sound();
   torn.topology = {-1, 2};
-  CHECK_FALSE(cones_replace(torn, 1.0, 0.5, 0, 4, annulus, criteria));
+  CHECK_FALSE(cones_replace(torn, band(1.0), band(0.5), 0, 4, annulus, criteria));
 }

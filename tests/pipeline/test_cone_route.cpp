@@ -492,6 +492,13 @@ TEST_CASE("a triangular plate whose acute corners are in one quad each: every cr
   check_part_acceptance("parts/triangle-plate-two-holes.geo", -1, 3, 0.9, 3);
 }
 
+TEST_CASE("a filleted plate whose Abel quads have one above 3 x the size, though 96% are in the band: the cones mesh it" *
+          doctest::test_suite("slow")) {
+  // the band is 90% of the quads within [0.5, 2] x the size and none above 3 x;
+  // auto had weighed only the share, and kept a quad 3.7 x the size at a fillet
+  check_part_acceptance("parts/plate-fillets-ellipse.geo", -2, 4, 0.9, 0);
+}
+
 TEST_CASE("an angle bracket with a bolt hole in each arm and at the heel: the fallback placements mesh it" *
           doctest::test_suite("slow")) {
   // arms 15 wide (8.8 quads at 1.5% of the diagonal), holes of radius 3 (3.5 quads

@@ -324,13 +324,15 @@ std::string unsound_reason(const CandidateQuality& c, SurfaceTopology input) {
   return fmt::format("{}", fmt::join(parts, ", "));
 }
 
-bool cones_replace(const CandidateQuality& cones, double cones_band, double abel_band, std::size_t cones_corners,
-                   std::size_t abel_corners, SurfaceTopology input, const AcceptanceCriteria& criteria) {
+bool cones_replace(const CandidateQuality& cones, const SizeBand& cones_band, const SizeBand& abel_band,
+                   std::size_t cones_corners, std::size_t abel_corners, SurfaceTopology input,
+                   const AcceptanceCriteria& criteria) {
   if (!sound(cones, input, criteria)) return false;
   // more quads in the band (by more than a point), or the corners right while the
-  // band keeps its goal
-  if (cones_band > abel_band + 0.01) return true;
-  return cones_corners < abel_corners && cones_band >= size_band_goal;
+  // band keeps its goal, or the band met where the Abel quads have one too large
+  if (cones_band.share_in_band > abel_band.share_in_band + 0.01) return true;
+  if (cones_corners < abel_corners && cones_band.share_in_band >= size_band_goal) return true;
+  return cones_corners <= abel_corners && in_size_band(cones_band) && !in_size_band(abel_band);
 }
 
 namespace {
@@ -713,10 +715,10 @@ ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOpt
                                        Stages& stages, Candidate& best, ConesFirst first) {
   ConeRouteOutcome outcome;
   if (options.singularities != Singularities::automatic) return outcome;
-  const double abel_band = best.quality.has_quads ? size_band(best.result).share_in_band : 0.0;
-  outcome.abel_size_band_share = abel_band;
+  const SizeBand abel_band = best.quality.has_quads ? size_band(best.result) : SizeBand{};
+  outcome.abel_size_band_share = abel_band.share_in_band;
   const std::size_t abel_corners = best.quality.has_quads ? corner_mismatches(best.result) : 0;
-  if (abel_band >= size_band_goal && abel_corners == 0) return outcome;
+  if (in_size_band(abel_band) && abel_corners == 0) return outcome;
   if (!first.failure.empty()) {  // tried before the Abel route, and failed
     outcome.failure = first.failure;
     return outcome;
@@ -725,14 +727,14 @@ ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOpt
     ConeCandidate tried = first.tried ? std::move(*first.tried) : cone_candidate(setup, options, input, stages);
     judge_as_written(tried, options, setup.diagonal, input, stages);
     Candidate& cones = tried.candidate;
-    const double cones_band = tried.band.share_in_band;
+    const SizeBand& cones_band = tried.band;
     const std::size_t cones_corners = corner_mismatches(cones.result);
     if (!cones_replace(cones.quality, cones_band, abel_band, cones_corners, abel_corners, input, options.acceptance)) {
       outcome.failure = fmt::format(
           "the cones' quads were not better ({}; {:.0f}% in the size band against {:.0f}%; {} corners with the wrong "
           "quad count against {})",
           sound(cones.quality, input, options.acceptance) ? "sound" : "not sound: " + unsound_reason(cones.quality, input),
-          100 * cones_band, 100 * abel_band, cones_corners, abel_corners);
+          100 * cones_band.share_in_band, 100 * abel_band.share_in_band, cones_corners, abel_corners);
       return outcome;
     }
     // nor farther from S than the criterion allows (the Abel quads are refined

@@ -152,9 +152,12 @@ std::string unsound_reason(const CandidateQuality& c, SurfaceTopology input);
 
 /// Whether the cone candidate replaces the Abel one: sound, and more of its quads
 /// in the size band (by more than a point), or fewer corners of S whose quad count
-/// is not one per 90 degrees with size_band_goal of its quads in the band.
-bool cones_replace(const CandidateQuality& cones, double cones_band, double abel_band, std::size_t cones_corners,
-                   std::size_t abel_corners, SurfaceTopology input, const AcceptanceCriteria& criteria);
+/// is not one per 90 degrees with size_band_goal of its quads in the band, or, with
+/// no more such corners, the band met (in_size_band) where the Abel quads miss it
+/// (a quad above size_ratio_limit).
+bool cones_replace(const CandidateQuality& cones, const SizeBand& cones_band, const SizeBand& abel_band,
+                   std::size_t cones_corners, std::size_t abel_corners, SurfaceTopology input,
+                   const AcceptanceCriteria& criteria);
 
 /// A cone candidate with its quads' size band (measured once).
 struct ConeCandidate {
@@ -166,7 +169,8 @@ struct ConeCandidate {
 };
 
 /// Singularities::automatic: when `best` (the Abel result) has fewer than
-/// size_band_goal of its quads in the size band, or none, or a CAD corner with
+/// size_band_goal of its quads in the size band or a quad above size_ratio_limit
+/// x the size, or none, or a CAD corner with
 /// another quad count than one per 90 degrees, meshes by the cone route
 /// and keeps what cones_replace says, if its quads are also within the acceptance's
 /// Hausdorff distance of S (the cone route has no size adaptivity yet); records both
