@@ -784,10 +784,12 @@ TEST_CASE("mesh by default (auto): where the cones do not help, the Abel quads w
     const auto& q = j["quality"];
     const int corners = q["corners"]["convex"].get<int>() + q["corners"]["concave"].get<int>() +
                         q["corners"]["other"].get<int>();
+    const double largest = q["size_ratio_max"].get<double>();
     CHECK(line.rfind(fmt::format("quadmesh: warning: the Abel quads put {} of the input's {} corners in the wrong "
-                                 "number of quads ({:.0f}% of them within [0.5, 2] x --size); quarter-turn cones did "
+                                 "number of quads ({:.0f}% of them within [0.5, 2] x --size{}); quarter-turn cones did "
                                  "not help: ",
-                                 corners, corners, 100 * j["singularities"]["abel_size_band_share"].get<double>()),
+                                 corners, corners, 100 * j["singularities"]["abel_size_band_share"].get<double>(),
+                                 largest > 3 ? fmt::format(", the largest {:.1f} x", largest) : std::string()),
                      0) == 0);
     CHECK(line.find(failure + "; the Abel result is kept") != std::string::npos);
   }

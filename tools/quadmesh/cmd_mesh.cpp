@@ -5,6 +5,7 @@
 #include "libquadmesh/pipeline/mesh_quads.h"
 #include "libquadmesh/quality/hausdorff.h"
 #include "libquadmesh/quality/quad_quality.h"
+#include "libquadmesh/quality/size_band.h"
 #include "tools/common/exit_codes.h"
 #include "tools/common/input_surface.h"
 #include "tools/common/output_paths.h"
@@ -316,9 +317,11 @@ QuadMeshOptions quad_mesh_options(const MeshOptions& options) {
 namespace {
 
 /// What the Abel quads miss that sends auto to the cones (cone_route.h): the size
-/// band, the corners' quad counts, or both.
+/// band (the share within it, and the largest quad when above size_ratio_limit),
+/// the corners' quad counts, or both.
 std::string abel_shortfall(const QuadQuality& q, double band_share) {
-  const std::string band = fmt::format("{:.0f}% of them within [0.5, 2] x --size", 100 * band_share);
+  std::string band = fmt::format("{:.0f}% of them within [0.5, 2] x --size", 100 * band_share);
+  if (q.size_ratio_max > size_ratio_limit) band += fmt::format(", the largest {:.1f} x", q.size_ratio_max);
   if (corners_wrong(q) == 0) return "miss the size band (" + band + ")";
   return fmt::format("put {} of the input's {} corners in the wrong number of quads ({})", corners_wrong(q),
                      corners_total(q), band);
