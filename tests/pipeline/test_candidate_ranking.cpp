@@ -126,27 +126,48 @@ TEST_CASE("ranking: the measurement of a result, once, and its sound Jacobian as
 TEST_CASE("singularities auto: the cone result replaces the Abel one only when sound and better in band or corners") {
   const AcceptanceCriteria criteria;
   const CandidateQuality cones = sound();
-  auto band = [](double share, double largest = 1.5) { return SizeBand{100, share, largest, 0.6}; };
+  auto judged = [](const CandidateQuality& q, double share, std::size_t corners_wrong = 0, double largest = 1.5) {
+    return RouteJudgement{q, SizeBand{100, share, largest, 0.6}, corners_wrong};
+  };
+  auto with = [&](double share, std::size_t corners_wrong = 0, double largest = 1.5) {
+    return judged(cones, share, corners_wrong, largest);
+  };
   // more quads in the size band, by more than a point
-  CHECK(cones_replace(cones, band(0.95), band(0.80), 0, 0, annulus, criteria));
-  CHECK_FALSE(cones_replace(cones, band(0.805), band(0.80), 0, 0, annulus, criteria));
+  CHECK(cones_replace(with(0.95), with(0.80), annulus, criteria));
+  CHECK_FALSE(cones_replace(with(0.805), with(0.80), annulus, criteria));
   // the corners right (one quad per 90 degrees) while the band keeps its goal
-  CHECK(cones_replace(cones, band(0.97), band(0.98), 0, 4, annulus, criteria));
-  CHECK_FALSE(cones_replace(cones, band(size_band_goal - 0.05), band(0.86), 0, 4, annulus, criteria));
-  CHECK_FALSE(cones_replace(cones, band(0.97), band(0.98), 2, 2, annulus, criteria));
+  CHECK(cones_replace(with(0.97), with(0.98, 4), annulus, criteria));
+  CHECK_FALSE(cones_replace(with(0.97, 2), with(0.98, 2), annulus, criteria));
   // the band met where the Abel quads have one above 3 x the size, the corners no worse
-  CHECK(cones_replace(cones, band(0.95, 2.4), band(0.96, 3.7), 0, 0, annulus, criteria));
-  CHECK_FALSE(cones_replace(cones, band(0.95, 3.1), band(0.96, 3.7), 0, 0, annulus, criteria));
-  CHECK_FALSE(cones_replace(cones, band(0.95, 2.4), band(0.96, 2.9), 0, 0, annulus, criteria));
-  CHECK_FALSE(cones_replace(cones, band(0.95, 2.4), band(0.96, 3.7), 1, 0, annulus, criteria));
+  CHECK(cones_replace(with(0.95, 0, 2.4), with(0.96, 0, 3.7), annulus, criteria));
+  CHECK_FALSE(cones_replace(with(0.95, 0, 3.1), with(0.96, 0, 3.7), annulus, criteria));
+  CHECK_FALSE(cones_replace(with(0.95, 0, 2.4), with(0.96, 0, 2.9), annulus, criteria));
+  CHECK_FALSE(cones_replace(with(0.95, 1, 2.4), with(0.96, 0, 3.7), annulus, criteria));
+  // fewer criteria missed (the band both, the corners only the Abel quads'), the
+  // share at most ten points lower and the largest quad no larger: a gusset
+  CHECK(criteria_missed(with(0.75, 0, 4.3), criteria) == 1);
+  CHECK(criteria_missed(with(0.81, 3, 6.8), criteria) == 2);
+  CHECK(cones_replace(with(0.75, 0, 4.3), with(0.81, 3, 6.8), annulus, criteria));
+  CHECK_FALSE(cones_replace(with(0.70, 0, 4.3), with(0.81, 3, 6.8), annulus, criteria));
+  CHECK_FALSE(cones_replace(with(0.75, 0, 7.0), with(0.81, 3, 6.8), annulus, criteria));
+  CHECK_FALSE(cones_replace(with(0.75, 1, 4.3), with(0.81, 3, 6.8), annulus, criteria));
+  // the corners right, both short of the band's share: one criterion against two
+  CHECK(cones_replace(with(size_band_goal - 0.05, 0), with(0.86, 4), annulus, criteria));
+  // the Abel quads below the Jacobian floor or off right angles miss those too
+  CandidateQuality skewed = sound();
+  skewed.min_sound_scaled_jacobian = 0.2;
+  skewed.angle_dev_mean = 6.0;
+  CHECK(criteria_missed(judged(skewed, 0.95), criteria) == 2);
+  CHECK(cones_replace(with(0.88, 0, 1.4), judged(skewed, 0.95), annulus, criteria));
+  CHECK_FALSE(cones_replace(with(0.88, 0, 2.5), judged(skewed, 0.95), annulus, criteria));
   // never when unsound, however good the band
   CandidateQuality dropped = sound();
   dropped.dropped_cells = 1;
-  CHECK_FALSE(cones_replace(dropped, band(1.0), band(0.5), 0, 4, annulus, criteria));
+  CHECK_FALSE(cones_replace(judged(dropped, 1.0), with(0.5, 4), annulus, criteria));
   CandidateQuality inverted = sound();
   inverted.inverted = 1;
-  CHECK_FALSE(cones_replace(inverted, band(1.0), band(0.5), 0, 4, annulus, criteria));
+  CHECK_FALSE(cones_replace(judged(inverted, 1.0), with(0.5, 4), annulus, criteria));
   CandidateQuality torn = sound();
   torn.topology = {-1, 2};
-  CHECK_FALSE(cones_replace(torn, band(1.0), band(0.5), 0, 4, annulus, criteria));
+  CHECK_FALSE(cones_replace(judged(torn, 1.0), with(0.5, 4), annulus, criteria));
 }

@@ -324,15 +324,25 @@ std::string unsound_reason(const CandidateQuality& c, SurfaceTopology input) {
   return fmt::format("{}", fmt::join(parts, ", "));
 }
 
-bool cones_replace(const CandidateQuality& cones, const SizeBand& cones_band, const SizeBand& abel_band,
-                   std::size_t cones_corners, std::size_t abel_corners, SurfaceTopology input,
+int criteria_missed(const RouteJudgement& j, const AcceptanceCriteria& criteria) {
+  return static_cast<int>(!in_size_band(j.band)) + static_cast<int>(j.corners_wrong > 0) +
+         static_cast<int>(j.quality.min_sound_scaled_jacobian < criteria.min_scaled_jacobian) +
+         static_cast<int>(j.quality.angle_dev_mean > criteria.max_mean_angle_deviation_deg);
+}
+
+bool cones_replace(const RouteJudgement& cones, const RouteJudgement& abel, SurfaceTopology input,
                    const AcceptanceCriteria& criteria) {
-  if (!sound(cones, input, criteria)) return false;
+  if (!sound(cones.quality, input, criteria)) return false;
+  const double cones_share = cones.band.share_in_band, abel_share = abel.band.share_in_band;
   // more quads in the band (by more than a point), or the corners right while the
   // band keeps its goal, or the band met where the Abel quads have one too large
-  if (cones_band.share_in_band > abel_band.share_in_band + 0.01) return true;
-  if (cones_corners < abel_corners && cones_band.share_in_band >= size_band_goal) return true;
-  return cones_corners <= abel_corners && in_size_band(cones_band) && !in_size_band(abel_band);
+  if (cones_share > abel_share + 0.01) return true;
+  if (cones.corners_wrong < abel.corners_wrong && cones_share >= size_band_goal) return true;
+  if (cones.corners_wrong <= abel.corners_wrong && in_size_band(cones.band) && !in_size_band(abel.band)) return true;
+  // fewer criteria missed, with the band's share at most max_share_given lower
+  // and the largest quad no larger
+  return criteria_missed(cones, criteria) < criteria_missed(abel, criteria) &&
+         cones_share >= abel_share - max_share_given && cones.band.max_ratio <= abel.band.max_ratio;
 }
 
 namespace {
@@ -715,10 +725,10 @@ ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOpt
                                        Stages& stages, Candidate& best, ConesFirst first) {
   ConeRouteOutcome outcome;
   if (options.singularities != Singularities::automatic) return outcome;
-  const SizeBand abel_band = best.quality.has_quads ? size_band(best.result) : SizeBand{};
-  outcome.abel_size_band_share = abel_band.share_in_band;
-  const std::size_t abel_corners = best.quality.has_quads ? corner_mismatches(best.result) : 0;
-  if (in_size_band(abel_band) && abel_corners == 0) return outcome;
+  const RouteJudgement abel{best.quality, best.quality.has_quads ? size_band(best.result) : SizeBand{},
+                            best.quality.has_quads ? corner_mismatches(best.result) : 0};
+  outcome.abel_size_band_share = abel.band.share_in_band;
+  if (in_size_band(abel.band) && abel.corners_wrong == 0) return outcome;
   if (!first.failure.empty()) {  // tried before the Abel route, and failed
     outcome.failure = first.failure;
     return outcome;
@@ -727,14 +737,13 @@ ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOpt
     ConeCandidate tried = first.tried ? std::move(*first.tried) : cone_candidate(setup, options, input, stages);
     judge_as_written(tried, options, setup.diagonal, input, stages);
     Candidate& cones = tried.candidate;
-    const SizeBand& cones_band = tried.band;
-    const std::size_t cones_corners = corner_mismatches(cones.result);
-    if (!cones_replace(cones.quality, cones_band, abel_band, cones_corners, abel_corners, input, options.acceptance)) {
+    const RouteJudgement judged{cones.quality, tried.band, corner_mismatches(cones.result)};
+    if (!cones_replace(judged, abel, input, options.acceptance)) {
       outcome.failure = fmt::format(
           "the cones' quads were not better ({}; {:.0f}% in the size band against {:.0f}%; {} corners with the wrong "
           "quad count against {})",
           sound(cones.quality, input, options.acceptance) ? "sound" : "not sound: " + unsound_reason(cones.quality, input),
-          100 * cones_band.share_in_band, 100 * abel_band.share_in_band, cones_corners, abel_corners);
+          100 * judged.band.share_in_band, 100 * abel.band.share_in_band, judged.corners_wrong, abel.corners_wrong);
       return outcome;
     }
     // nor farther from S than the criterion allows (the Abel quads are refined

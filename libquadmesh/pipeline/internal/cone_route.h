@@ -150,13 +150,32 @@ bool sound(const CandidateQuality& c, SurfaceTopology input, const AcceptanceCri
 /// dropped cells"); empty when it is sound.
 std::string unsound_reason(const CandidateQuality& c, SurfaceTopology input);
 
+/// What the route weighs of a candidate against another: its quality, its quads'
+/// size band, and its corners of S in other than one quad per 90 degrees.
+struct RouteJudgement {
+  CandidateQuality quality;
+  SizeBand band;
+  std::size_t corners_wrong = 0;
+};
+
+/// How many of the acceptance's criteria the judged quads miss, of: the size band
+/// (in_size_band), every corner's quad count, the Jacobian floor (on the sound
+/// scaled Jacobian) and the mean angle deviation.
+int criteria_missed(const RouteJudgement& j, const AcceptanceCriteria& criteria);
+
+/// The band's share a cone candidate may give up against the Abel one when it
+/// misses fewer criteria (cones_replace).
+constexpr double max_share_given = 0.1;
+
 /// Whether the cone candidate replaces the Abel one: sound, and more of its quads
 /// in the size band (by more than a point), or fewer corners of S whose quad count
 /// is not one per 90 degrees with size_band_goal of its quads in the band, or, with
 /// no more such corners, the band met (in_size_band) where the Abel quads miss it
-/// (a quad above size_ratio_limit).
-bool cones_replace(const CandidateQuality& cones, const SizeBand& cones_band, const SizeBand& abel_band,
-                   std::size_t cones_corners, std::size_t abel_corners, SurfaceTopology input,
+/// (a quad above size_ratio_limit), or fewer of the criteria missed
+/// (criteria_missed), its band's share at most max_share_given below the Abel
+/// one's and its largest quad no larger (a gusset whose 45-degree corners the Abel
+/// quads split, one quad 6.8 x the size: the cones' corners right, 4.3 x).
+bool cones_replace(const RouteJudgement& cones, const RouteJudgement& abel, SurfaceTopology input,
                    const AcceptanceCriteria& criteria);
 
 /// A cone candidate with its quads' size band (measured once).
