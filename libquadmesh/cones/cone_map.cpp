@@ -3,6 +3,7 @@
 #include "libquadmesh/cones/cone_metric.h"
 #include "libquadmesh/cones/cone_winding.h"
 #include "libquadmesh/cones/tip_scale.h"
+#include "libquadmesh/cones/tip_shear.h"
 #include "libquadmesh/core/error.h"
 
 #include <cmath>
@@ -59,8 +60,12 @@ ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, co
       scale[static_cast<Eigen::Index>(v)] = ring_mean(soup, adjacency, out.u, v);
   // an acute corner's singular scale left out near it: the map sheared there
   // rather than its quads swollen (tip_scale.h)
-  scale += tip_scale_offset(soup, adjacency, target, curvature, scale, size);
-  out.map = seamless_map(soup, adjacency, scale, out.field, out.cut, out.quads, size, out.report, order);
+  const std::vector<AcuteTip> tips = acute_tips(soup, adjacency, target, curvature, size);
+  scale += tip_scale_offset(soup, adjacency, tips, scale);
+  // and the map sheared at each tip, its quad a parallelogram along the tip's
+  // edges (tip_shear.h)
+  const FitShape shape = tip_shear(soup, adjacency, tips, out.field, size);
+  out.map = seamless_map(soup, adjacency, scale, out.field, out.cut, out.quads, size, out.report, order, &shape);
   if (out.report.inverted_triangles > 0) out.misturned = misturned_cones(soup, adjacency, out.map, out.quads);
   return out;
 }

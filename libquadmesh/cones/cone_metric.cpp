@@ -194,7 +194,9 @@ Eigen::VectorXd ConeMetricSolver::apply_inverse(const Eigen::VectorXd& x) const 
 Eigen::VectorXd ConeMetricSolver::solve(const std::vector<double>& target_curvature,
                                         const std::vector<double>& surface_curvature, double tip_size) const {
   Eigen::VectorXd u = metric(target_curvature, surface_curvature);
-  if (tip_size > 0) u += tip_scale_offset(soup_, adjacency_, target_curvature, surface_curvature, u, tip_size);
+  if (tip_size > 0)
+    u += tip_scale_offset(soup_, adjacency_, acute_tips(soup_, adjacency_, target_curvature, surface_curvature, tip_size),
+                          u);
   return u;
 }
 

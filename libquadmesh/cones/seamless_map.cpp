@@ -91,17 +91,20 @@ std::vector<Complex> target_scales(const TriangleSoup& soup, const Eigen::Vector
 }
 
 /// The fitting energy's matrix and right side (the cotan form of the Dirichlet
-/// energy of W - target on each triangle).
-void add_fitting_energy(const TriangleSoup& soup, const std::vector<Complex>& scales, const CutGraph& cut,
-                        const std::vector<double>& stiffness, Triplets& H, Eigen::VectorXd& b) {
+/// energy of W - target on each triangle; the target's gradient the scale, or
+/// the scale times `shape` where given).
+void add_fitting_energy(const TriangleSoup& soup, const std::vector<Complex>& scales, const FitShape* shape,
+                        const CutGraph& cut, const std::vector<double>& stiffness, Triplets& H, Eigen::VectorXd& b) {
   for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
     const CornerValues x = local_corners(soup, f);
     const auto cot = corner_cotangents(soup, f);
     const Complex scale = scales[f];
+    const bool sheared = shape && shape->anticonformal[f] != Complex(0, 0);
     for (int k = 0; k < 3; ++k) {
       const auto i = static_cast<std::size_t>((k + 1) % 3), j = static_cast<std::size_t>((k + 2) % 3);
       const double w = 0.5 * stiffness[f] * cot[static_cast<std::size_t>(k)];
-      const Complex d = scale * (x[j] - x[i]);
+      const Complex e = x[j] - x[i];
+      const Complex d = sheared ? scale * (shape->conformal[f] * e + shape->anticonformal[f] * std::conj(e)) : scale * e;
       const int wi = cut.wedge[f][i], wj = cut.wedge[f][j];
       for (int c = 0; c < 2; ++c) {
         const int vi = 2 * wi + c, vj = 2 * wj + c;
@@ -628,7 +631,7 @@ void stiffen(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const 
 
 FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u,
                      const CrossField& field, const CutGraph& cut, const std::vector<int>& quads, double size,
-                     SeamlessMapReport& report, RoundingOrder order) {
+                     SeamlessMapReport& report, RoundingOrder order, const FitShape* shape) {
   QM_ASSERT(size > 0);
   report = {};
   std::vector<Row> rows;
@@ -639,7 +642,7 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   auto energy = [&](Triplets& H, Eigen::VectorXd& b) {
     H.clear();
     b = Eigen::VectorXd::Zero(variables);
-    add_fitting_energy(soup, scales, cut, stiffness, H, b);
+    add_fitting_energy(soup, scales, shape, cut, stiffness, H, b);
     // gauge: the map is fixed up to a translation; a faint pull of wedge 0 to 0
     // makes the system definite without competing with the integer values
     H.emplace_back(0, 0, gauge_weight);

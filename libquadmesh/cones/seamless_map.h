@@ -15,6 +15,7 @@
 #pragma once
 
 #include "libquadmesh/cones/cut_graph.h"
+#include "libquadmesh/cones/tip_shear.h"
 #include "libquadmesh/param/face_map.h"
 
 namespace qm {
@@ -45,10 +46,13 @@ struct SeamlessMapReport {
 enum class RoundingOrder { cones_first, translations_first };
 
 /// Per triangle corner, the value of the wedge it belongs to. `u` from
-/// cone_metric, `size` the target quad edge in the surface's units (> 0).
+/// cone_metric, `size` the target quad edge in the surface's units (> 0); `shape`,
+/// when given, what the fit asks of the gradient beside the scaled frame (the
+/// acute tips' shear, tip_shear.h).
 /// Throws qm::Error (solver) when the system cannot be factored.
 FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u,
                      const CrossField& field, const CutGraph& cut, const std::vector<int>& quads, double size,
-                     SeamlessMapReport& report, RoundingOrder order = RoundingOrder::cones_first);
+                     SeamlessMapReport& report, RoundingOrder order = RoundingOrder::cones_first,
+                     const FitShape* shape = nullptr);
 
 }  // namespace qm

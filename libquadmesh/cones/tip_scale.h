@@ -24,21 +24,37 @@ constexpr double tip_radius_quads = 12.0;
 /// as it is.
 constexpr double min_tip_reach_quads = 2.0;
 
-/// Per vertex, what the sizes add to the cone metric's log scale `u`. At every
-/// boundary vertex whose target angle (pi - target_curvature) is more than 1.4 x
-/// its angle on S (pi - surface_curvature: k above 0.4, so a 60-degree corner in
-/// one quad is one), k log(R / d) at the vertices a distance d < R from it along
-/// the edges, but no more than lifts u to its mean over the last fifth of that
-/// reach (never above the sizes round it: a 20-degree tip's k of 3.5 would lift
-/// its triangles far past them, and the map folds there); at the tip itself its
-/// nearest neighbour's. R is tip_radius_quads x size (`size` the quads'), or less:
-/// the distance to the first vertex of another boundary loop, or to where the
-/// tip's own loop turns otherwise than the targets ask by more than a quarter of
-/// the tip's excess (another corner; a fillet that ends at the tip, whose turn
-/// makes up for it); a tip whose R comes out under min_tip_reach_quads x size gets
-/// nothing. Zero everywhere when size is 0.
-Eigen::VectorXd tip_scale_offset(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+/// A boundary cone sharper than its quads, with how far from it its singular part
+/// is left out (tip_scale_offset).
+struct AcuteTip {
+  int vertex = -1;
+  double exponent = 0;  ///< k = target angle / angle on S - 1
+  double reach = 0;     ///< R
+  std::vector<std::pair<int, double>> near;  ///< the vertices within R, nearest first, with their distance
+};
+
+/// The acute tips as tip_scale_offset finds them: every boundary vertex whose k
+/// is above 0.4 and whose reach R is at least min_tip_reach_quads x size. None
+/// when size is 0.
+std::vector<AcuteTip> acute_tips(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                                  const std::vector<double>& target_curvature,
-                                 const std::vector<double>& surface_curvature, const Eigen::VectorXd& u, double size);
+                                 const std::vector<double>& surface_curvature, double size);
+
+/// Per vertex, what the sizes add to the cone metric's log scale `u` near the
+/// acute tips (acute_tips: boundary vertices whose target angle, pi -
+/// target_curvature, is more than 1.4 x their angle on S, pi - surface_curvature:
+/// k above 0.4, so a 60-degree corner in one quad is one): k log(R / d) at the
+/// vertices a distance d < R from a tip along the edges, but no more than lifts u
+/// to its mean over the last fifth of that reach (never above the sizes round it:
+/// a 20-degree tip's k of 3.5 would lift its triangles far past them, and the map
+/// folds there); the tip itself, whose u is the discretization's of the
+/// singularity, its neighbours' mean, lifted. R is tip_radius_quads x the quads'
+/// size, or less: the distance to the first vertex of another boundary loop, or to
+/// where the tip's own loop turns otherwise than the targets ask by more than a
+/// quarter of the tip's excess (another corner; a fillet that ends at the tip,
+/// whose turn makes up for it); a tip whose R comes out under min_tip_reach_quads
+/// x size is none.
+Eigen::VectorXd tip_scale_offset(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                 const std::vector<AcuteTip>& tips, const Eigen::VectorXd& u);
 
 }  // namespace qm

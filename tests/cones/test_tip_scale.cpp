@@ -50,6 +50,13 @@ double mean_between(const TriangleSoup& soup, const Eigen::VectorXd& u, double f
   return sum / count;
 }
 
+/// tip_scale_offset at the acute tips found for quads of `size`.
+Eigen::VectorXd offset_near_tips(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                 const std::vector<double>& target, const std::vector<double>& curvature,
+                                 const Eigen::VectorXd& u, double size) {
+  return tip_scale_offset(soup, adjacency, acute_tips(soup, adjacency, target, curvature, size), u);
+}
+
 }  // namespace
 
 TEST_CASE("an acute tip's singular scale is left out within the reach: the sizes there are the rim's") {
@@ -61,7 +68,7 @@ TEST_CASE("an acute tip's singular scale is left out within the reach: the sizes
   REQUIRE(curvature[0] == doctest::Approx(3 * M_PI / 4));
   const double radius = 20.5, size = radius / tip_radius_quads;
   const Eigen::VectorXd u = tip_metric(soup, 1.0, radius);
-  const Eigen::VectorXd offset = tip_scale_offset(soup, adjacency, one_quad_tip(curvature), curvature, u, size);
+  const Eigen::VectorXd offset = offset_near_tips(soup, adjacency, one_quad_tip(curvature), curvature, u, size);
   const double rim = mean_between(soup, u, 0.8 * radius, radius);
   double worst = 0;
   for (std::size_t v = 1; v < soup.points.size(); ++v) {
@@ -73,13 +80,13 @@ TEST_CASE("an acute tip's singular scale is left out within the reach: the sizes
       worst = std::max(worst, std::abs(offset[e]));
   }
   CHECK(worst < 1e-12);
-  CHECK(offset[0] == doctest::Approx(rim - u[1]));  // the tip: its nearest neighbour's
+  CHECK(u[0] + offset[0] == doctest::Approx(rim));  // the tip: its neighbours' mean, lifted
   // the sizes near the tip lifted from e^-3 (ring 1) to the rim's
   CHECK(u[1] + offset[1] == doctest::Approx(rim));
   CHECK(rim < 0);
   CHECK(u[1] < rim - 2.5);
   // no size, nothing
-  CHECK(tip_scale_offset(soup, adjacency, one_quad_tip(curvature), curvature, u, 0).cwiseAbs().maxCoeff() == 0);
+  CHECK(offset_near_tips(soup, adjacency, one_quad_tip(curvature), curvature, u, 0).cwiseAbs().maxCoeff() == 0);
 }
 
 TEST_CASE("a corner near its quads' angle is not a tip; a turn of the boundary near the tip ends the reach, and "
@@ -88,14 +95,14 @@ TEST_CASE("a corner near its quads' angle is not a tip; a turn of the boundary n
   const TriangleSoup wide = sector(70 * M_PI / 180, 30, 6);
   const SurfaceAdjacency wide_adjacency = surface_adjacency(wide);
   const std::vector<double> wide_curvature = vertex_curvature(wide, wide_adjacency);
-  const Eigen::VectorXd offset_wide = tip_scale_offset(wide, wide_adjacency, one_quad_tip(wide_curvature),
+  const Eigen::VectorXd offset_wide = offset_near_tips(wide, wide_adjacency, one_quad_tip(wide_curvature),
                                                        wide_curvature, tip_metric(wide, 0.29, 20), 20 / tip_radius_quads);
   CHECK(offset_wide.cwiseAbs().maxCoeff() == 0);
   // 60 degrees (k = 0.5) is a tip
   const TriangleSoup sixty = sector(M_PI / 3, 30, 6);
   const SurfaceAdjacency sixty_adjacency = surface_adjacency(sixty);
   const std::vector<double> sixty_curvature = vertex_curvature(sixty, sixty_adjacency);
-  CHECK(tip_scale_offset(sixty, sixty_adjacency, one_quad_tip(sixty_curvature), sixty_curvature,
+  CHECK(offset_near_tips(sixty, sixty_adjacency, one_quad_tip(sixty_curvature), sixty_curvature,
                          tip_metric(sixty, 0.5, 20), 20 / tip_radius_quads)
             .maxCoeff() > 0);
   // the 45-degree sector with a side vertex 11 rings out asked to turn by a third
@@ -110,7 +117,7 @@ TEST_CASE("a corner near its quads' angle is not a tip; a turn of the boundary n
   target[static_cast<std::size_t>(turned)] += M_PI / 12;
   const Eigen::VectorXd u = tip_metric(soup, 1.0, 20);
   const double size = 20 / tip_radius_quads;  // a reach of 11 is 6.6 quads
-  const Eigen::VectorXd offset = tip_scale_offset(soup, adjacency, target, curvature, u, size);
+  const Eigen::VectorXd offset = offset_near_tips(soup, adjacency, target, curvature, u, size);
   const double rim = mean_between(soup, u, 8.8, 11);
   double beyond = 0, within = 0;
   for (std::size_t v = 1; v < soup.points.size(); ++v) {
@@ -124,10 +131,10 @@ TEST_CASE("a corner near its quads' angle is not a tip; a turn of the boundary n
   CHECK(within < 1e-12);
   // a quarter of the excess or less does not
   target[static_cast<std::size_t>(turned)] = curvature[static_cast<std::size_t>(turned)] + M_PI / 20;
-  const Eigen::VectorXd farther = tip_scale_offset(soup, adjacency, target, curvature, u, size);
+  const Eigen::VectorXd farther = offset_near_tips(soup, adjacency, target, curvature, u, size);
   CHECK(farther[static_cast<Eigen::Index>(1 + 14 * 7)] > 0);  // ring 15
   // a turn 11 rings out is under two quads of 6 rings: the tip is left as it is
   target[static_cast<std::size_t>(turned)] += M_PI / 12;
-  CHECK(tip_scale_offset(soup, adjacency, target, curvature, u, 6).cwiseAbs().maxCoeff() == 0);
-  CHECK(tip_scale_offset(soup, adjacency, target, curvature, u, 5).maxCoeff() > 0);
+  CHECK(offset_near_tips(soup, adjacency, target, curvature, u, 6).cwiseAbs().maxCoeff() == 0);
+  CHECK(offset_near_tips(soup, adjacency, target, curvature, u, 5).maxCoeff() > 0);
 }
