@@ -495,8 +495,8 @@ TEST_CASE("a triangular plate whose acute corners are in one quad each: every cr
 TEST_CASE("a 45-degree gusset: its cones miss only the band, the Abel quads also the corners, so the cones are kept" *
           doctest::test_suite("slow")) {
   // the Abel quads split both 45-degree corners and the right one, 81% in the band
-  // with one quad 6.8 x the size; the cones put each corner in one quad, 75% in the
-  // band, the largest 4.3 x: one criterion missed against two (cones_replace)
+  // with one quad 6.8 x the size; the cones put each corner in one quad, 74% in the
+  // band, the largest 3.9 x: one criterion missed against two (cones_replace)
   TriangleSoup input;
   const QuadMeshResult r = mesh_cad_part(test::example("parts/gusset-45-three-holes.geo"), input);
   REQUIRE(r.singularities == "cones");
