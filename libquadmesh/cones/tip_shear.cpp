@@ -1,5 +1,7 @@
 #include "libquadmesh/cones/tip_shear.h"
 
+#include "libquadmesh/cones/internal/face_geometry.h"
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -8,25 +10,6 @@
 namespace qm {
 
 namespace {
-
-/// A 3D direction in triangle f's local frame (face_geometry.h: corner 0 at 0,
-/// corner 1 on the positive real axis), projected onto its plane and made unit;
-/// nothing when the triangle or the projection is degenerate.
-std::optional<Complex> in_local_frame(const TriangleSoup& soup, std::size_t f, const Vec3& direction) {
-  const Triangle& t = soup.triangles[f];
-  const Vec3& p0 = soup.points[static_cast<std::size_t>(t[0])];
-  const Vec3 a = soup.points[static_cast<std::size_t>(t[1])] - p0;
-  const Vec3 b = soup.points[static_cast<std::size_t>(t[2])] - p0;
-  const double la = a.norm();
-  if (!(la > 0)) return std::nullopt;
-  const Vec3 x = a / la;
-  const Vec3 across = b - b.dot(x) * x;
-  if (!(across.norm() > 0)) return std::nullopt;
-  const Vec3 y = across / across.norm();
-  const Complex local(direction.dot(x), direction.dot(y));
-  if (!(std::abs(local) > 1e-12 * direction.norm())) return std::nullopt;
-  return local / std::abs(local);
-}
 
 /// The affine shape (conformal, anticonformal) that takes the unit directions t1
 /// and t2 (t2 counter-clockwise of t1 by less than a half turn) to omega and
@@ -69,7 +52,7 @@ FitShape tip_shear(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, 
         mean /= 3;
         const double share = std::clamp((reach - mean) / fade, 0.0, 1.0);
         if (share <= weight[f]) continue;
-        const std::optional<Complex> t1 = in_local_frame(soup, f, edge1), t2 = in_local_frame(soup, f, edge2);
+        const std::optional<Complex> t1 = local_direction(soup, f, edge1), t2 = local_direction(soup, f, edge2);
         if (!t1 || !t2) continue;
         const double opening = std::arg(*t2 / *t1);
         if (!(opening > 0) || !(opening < M_PI / 2)) continue;

@@ -24,7 +24,7 @@ Vec3 centroid(const TriangleSoup& soup, std::size_t f) {
 }
 
 /// A direction in the xy-plane (complex) in triangle f's local frame (the soup is planar).
-Complex local_direction(const TriangleSoup& soup, std::size_t f, Complex direction) {
+Complex planar_direction(const TriangleSoup& soup, std::size_t f, Complex direction) {
   const Triangle& t = soup.triangles[f];
   const Vec3 a = soup.points[static_cast<std::size_t>(t[1])] - soup.points[static_cast<std::size_t>(t[0])];
   // the local real axis is a; the soup is counter-clockwise in the xy-plane
@@ -52,7 +52,7 @@ TEST_CASE("an acute tip's fit is the shear that takes its edges to the lattice a
   for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
     const Vec3 c = centroid(soup, f);
     const double phi = std::atan2(c.y(), c.x());
-    field.angle[f] = std::arg(local_direction(soup, f, std::polar(1.0, -2 * phi)));
+    field.angle[f] = std::arg(planar_direction(soup, f, std::polar(1.0, -2 * phi)));
   }
   const FitShape shape = tip_shear(soup, adjacency, tips, field, size);
   const double reach = shear_radius_quads * size;
@@ -69,7 +69,7 @@ TEST_CASE("an acute tip's fit is the shear that takes its edges to the lattice a
       continue;
     }
     const Complex frame = std::polar(1.0, -field.angle[f]);
-    const Complex t1 = local_direction(soup, f, 1.0), t2 = local_direction(soup, f, std::polar(1.0, alpha));
+    const Complex t1 = planar_direction(soup, f, 1.0), t2 = planar_direction(soup, f, std::polar(1.0, alpha));
     if (far < full_shear_share * reach - 1.5) {
       // the first edge to the real axis, the second to the imaginary one, at the scale
       worst = std::max({worst, std::abs(frame * (a * t1 + b * std::conj(t1)) - 1.0),

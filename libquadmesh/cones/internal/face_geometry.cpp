@@ -18,6 +18,22 @@ CornerValues local_corners(const TriangleSoup& soup, std::size_t f) {
   return {Complex(0, 0), Complex(la, 0), Complex(x, y)};
 }
 
+std::optional<Complex> local_direction(const TriangleSoup& soup, std::size_t f, const Vec3& direction) {
+  const Triangle& t = soup.triangles[f];
+  const Vec3& p0 = soup.points[static_cast<std::size_t>(t[0])];
+  const Vec3 a = soup.points[static_cast<std::size_t>(t[1])] - p0;
+  const Vec3 b = soup.points[static_cast<std::size_t>(t[2])] - p0;
+  const double la = a.norm();
+  if (!(la > 0)) return std::nullopt;
+  const Vec3 x = a / la;
+  const Vec3 across = b - b.dot(x) * x;
+  if (!(across.norm() > 0)) return std::nullopt;
+  const Vec3 y = across / across.norm();
+  const Complex local(direction.dot(x), direction.dot(y));
+  if (!(std::abs(local) > 1e-12 * direction.norm())) return std::nullopt;
+  return local / std::abs(local);
+}
+
 std::array<double, 3> corner_cotangents(const TriangleSoup& soup, std::size_t f) {
   const Triangle& t = soup.triangles[f];
   std::array<double, 3> cot{};

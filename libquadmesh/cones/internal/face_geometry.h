@@ -7,11 +7,17 @@
 #include "libquadmesh/param/face_map.h"
 
 #include <array>
+#include <optional>
 
 namespace qm {
 
 /// Corners of triangle f in its local frame (counter-clockwise, the soup's order).
 CornerValues local_corners(const TriangleSoup& soup, std::size_t f);
+
+/// A 3D direction in triangle f's local frame (that of local_corners), projected
+/// onto the triangle's plane and made unit; nothing when the triangle or the
+/// projection is degenerate.
+std::optional<Complex> local_direction(const TriangleSoup& soup, std::size_t f, const Vec3& direction);
 
 /// cot of the angle at each corner of triangle f.
 std::array<double, 3> corner_cotangents(const TriangleSoup& soup, std::size_t f);

@@ -42,13 +42,17 @@ CandidateQuality assess_candidate(const QuadMeshResult& result) {
 bool Shortcomings::operator<(const Shortcomings& o) const { return key(*this) < key(o); }
 bool Shortcomings::operator<=(const Shortcomings& o) const { return key(*this) <= key(o); }
 
+int shape_criteria_missed(const CandidateQuality& c, const AcceptanceCriteria& criteria) {
+  return (c.min_sound_scaled_jacobian < criteria.min_scaled_jacobian ? 1 : 0) +
+         (c.angle_dev_mean > criteria.max_mean_angle_deviation_deg ? 1 : 0);
+}
+
 Shortcomings shortcomings(const CandidateQuality& c, SurfaceTopology input, const AcceptanceCriteria& criteria) {
   Shortcomings s;
   s.wrong_topology = c.topology == input ? 0 : 1;
   s.inverted_or_flipped = c.inverted + c.flipped;
   s.dropped_or_stray = c.dropped_cells + c.stray_boundary_points;
-  s.unmet_criteria = (c.min_sound_scaled_jacobian < criteria.min_scaled_jacobian ? 1 : 0) +
-                     (c.angle_dev_mean > criteria.max_mean_angle_deviation_deg ? 1 : 0);
+  s.unmet_criteria = shape_criteria_missed(c, criteria);
   s.negated_min_jacobian = -c.min_sound_scaled_jacobian;
   return s;
 }

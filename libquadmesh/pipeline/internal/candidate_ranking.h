@@ -67,6 +67,10 @@ struct Shortcomings {
   bool operator<=(const Shortcomings& o) const;
 };
 
+/// How many of the shape criteria the quads miss: the Jacobian floor (on the sound
+/// scaled Jacobian) and the mean angle deviation (0, 1 or 2).
+int shape_criteria_missed(const CandidateQuality& c, const AcceptanceCriteria& criteria);
+
 Shortcomings shortcomings(const CandidateQuality& c, SurfaceTopology input, const AcceptanceCriteria& criteria);
 
 /// Sound and shapely: nothing but the Jacobian's size left to improve (the first

@@ -326,8 +326,7 @@ std::string unsound_reason(const CandidateQuality& c, SurfaceTopology input) {
 
 int criteria_missed(const RouteJudgement& j, const AcceptanceCriteria& criteria) {
   return static_cast<int>(!in_size_band(j.band)) + static_cast<int>(j.corners_wrong > 0) +
-         static_cast<int>(j.quality.min_sound_scaled_jacobian < criteria.min_scaled_jacobian) +
-         static_cast<int>(j.quality.angle_dev_mean > criteria.max_mean_angle_deviation_deg);
+         shape_criteria_missed(j.quality, criteria);
 }
 
 bool cones_replace(const RouteJudgement& cones, const RouteJudgement& abel, SurfaceTopology input,

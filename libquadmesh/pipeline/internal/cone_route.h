@@ -159,8 +159,8 @@ struct RouteJudgement {
 };
 
 /// How many of the acceptance's criteria the judged quads miss, of: the size band
-/// (in_size_band), every corner's quad count, the Jacobian floor (on the sound
-/// scaled Jacobian) and the mean angle deviation.
+/// (in_size_band), every corner's quad count, and the shape criteria
+/// (shape_criteria_missed: the Jacobian floor, the mean angle deviation).
 int criteria_missed(const RouteJudgement& j, const AcceptanceCriteria& criteria);
 
 /// The band's share a cone candidate may give up against the Abel one when it
