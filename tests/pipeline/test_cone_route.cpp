@@ -397,16 +397,57 @@ TEST_CASE("a plate with rounded corners gets a valence-3 cone beside each fillet
   CHECK(q.size_ratio_max <= 3.0);
 }
 
+TEST_CASE("where no placement is acceptable, the sound one nearest the acceptance is kept, not the first" *
+          doctest::test_suite("slow")) {
+  // the quads of a plate written as OpenCASCADE .geo commands, its cones kept
+  const auto cone_quads_of = [](const std::string& name, const std::string& commands) {
+    TriangleSoup input;
+    const QuadMeshResult r = mesh_geo_text(name, "SetFactory(\"OpenCASCADE\");\n" + commands, input);
+    REQUIRE(r.singularities == "cones");
+    return quad_quality(polygon_mesh(r.quads), &input, r.size_requested);
+  };
+  // generated plates (scripts/plate-sweep p16 and p2). A 150 x 60 plate with seven
+  // holes: the first sound placement had 86% of its quads in the band, one 3.9 x
+  // the size; a later one meets every criterion
+  const QuadQuality seven = cone_quads_of(
+      "plate_seven_holes",
+      "Rectangle(1) = {0, 0, 0, 150, 60};\n"
+      "Disk(2) = {22.66, 41.44, 0, 3.51}; Disk(3) = {138.04, 36.83, 0, 6.86}; Disk(4) = {99.40, 29.31, 0, 5.88};\n"
+      "Disk(5) = {28.28, 11.18, 0, 5.46}; Disk(6) = {113.68, 47.75, 0, 6.91}; Disk(7) = {86.29, 16.83, 0, 6.33};\n"
+      "Disk(8) = {78.73, 44.04, 0, 6.91};\n"
+      "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:8}; Delete; }\n");
+  check_acceptance(seven, -6, 8, 0.9, 4);
+  CHECK(seven.size_ratio_max <= 3.0);
+  // a 200 x 80 plate with fillets of radius 5 (1.5 quads) and three holes: the first
+  // sound placement had 71% in the band and a quad 5.5 x the size by a fillet,
+  // 5.5% of the diagonal from the surface, and the Abel quads (36%, 6.8 x) were
+  // kept; the fillets' cones, tried last, bring 89% of the quads into the band and
+  // none above 3 x
+  const QuadQuality rounded = cone_quads_of(
+      "plate_fillets_three_holes",
+      "Rectangle(1) = {0, 0, 0, 200, 80, 5};\n"
+      "Disk(2) = {148.42, 52.65, 0, 5.03}; Disk(3) = {31.10, 13.16, 0, 7.63}; Disk(4) = {144.50, 24.99, 0, 5.69};\n"
+      "BooleanDifference{ Surface{1}; Delete; }{ Surface{2, 3, 4}; Delete; }\n");
+  check_acceptance(rounded, -2, 4, 0.85, 0);
+  CHECK(rounded.size_ratio_max <= 3.0);
+  // a U-channel plate: its greedy placement nearest the acceptance, on a lattice
+  // centred on the band, meets every criterion (the first sound one did not, and the
+  // cross field's singularities were mapped after it)
+  check_part_acceptance("parts/u-channel-plate.geo", -3, 5, 0.9, 6);
+}
+
 TEST_CASE("parts whose greedy cones leave the sizes off take the smoothest cross field's singularities after them" *
           doctest::test_suite("slow")) {
   // a square flange with rounded corners, a bore and four bolt holes: the greedy
   // placements' quads reach 4-5.5 x the size (78-82% in the band) and the Abel
   // quads (89%) were kept; a spanner: every greedy placement's metric reaches 10^5 x
   // the size in its jaw, and its Abel quads miss everything but the topology; a
-  // U-channel plate (a filleted slot between its legs: 86% in the band, 6.6
-  // degrees) and a Z-shaped plate (crowded holes: every greedy placement folds, the
-  // Abel quads keep an inverted one), whose fields met some corners half-way
-  // between two counts otherwise than the corners are counted, until held to them
+  // Z-shaped plate (crowded holes: every greedy placement folds, the Abel quads keep
+  // an inverted one), whose field met some corners half-way between two counts
+  // otherwise than the corners are counted, until held to them. (A U-channel plate,
+  // a filleted slot between its legs, took the field's too, while the first sound
+  // greedy placement was the one centred: 86% in the band, 6.6 degrees. The sound
+  // one nearest the acceptance, centred, meets every criterion: below)
   CHECK(cross_field_placement().interior == InteriorCones::cross_field);
   for (const ConePlacementOptions& p : cone_placements()) CHECK(p.interior == InteriorCones::greedy);
   struct Part {
@@ -415,7 +456,7 @@ TEST_CASE("parts whose greedy cones leave the sizes off take the smoothest cross
     std::size_t corners;
   };
   for (const Part& part : {Part{"parts/square-flange-four-bolts.geo", -4, 6, 0}, Part{"parts/spanner.geo", -1, 3, 12},
-                           Part{"parts/u-channel-plate.geo", -3, 5, 6}, Part{"parts/z-plate-holes.geo", -4, 6, 8}}) {
+                           Part{"parts/z-plate-holes.geo", -4, 6, 8}}) {
     CAPTURE(part.file);
     TriangleSoup input;
     std::vector<std::string> messages;
@@ -495,8 +536,9 @@ TEST_CASE("a triangular plate whose acute corners are in one quad each: every cr
 TEST_CASE("a 45-degree gusset: its cones miss only the band, the Abel quads also the corners, so the cones are kept" *
           doctest::test_suite("slow")) {
   // the Abel quads split both 45-degree corners and the right one, 81% in the band
-  // with one quad 6.8 x the size; the cones put each corner in one quad, 74% in the
-  // band, the largest 3.9 x: one criterion missed against two (cones_replace)
+  // with one quad 6.8 x the size; the cones put each corner in one quad, 88% in the
+  // band (74% before the sound placement nearest the acceptance was kept rather than
+  // the first), the largest 3.7 x: one criterion missed against two (cones_replace)
   TriangleSoup input;
   const QuadMeshResult r = mesh_cad_part(test::example("parts/gusset-45-three-holes.geo"), input);
   REQUIRE(r.singularities == "cones");
@@ -508,7 +550,7 @@ TEST_CASE("a 45-degree gusset: its cones miss only the band, the Abel quads also
   CHECK(q.angle_dev_mean <= 5.0);
   CHECK(corners_total(q) == 3);
   CHECK(corners_wrong(q) == 0);
-  CHECK(q.size_band_share >= 0.7);
+  CHECK(q.size_band_share >= 0.85);
   CHECK(q.size_ratio_max < 6.8);
 }
 
