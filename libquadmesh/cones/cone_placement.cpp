@@ -669,13 +669,20 @@ std::vector<Cone> place_cones(const ConeMetricSolver& solver, double size, const
   double total_area = 0;
   for (double a : area) total_area += a;
   const double allowed = std::max(options.max_interior_cones, options.max_interior_cone_share * total_area / (size * size));
+  // the fillets' valence-3 cones (fillet_cones) each ask one valence-5 cone more:
+  // counted in the crowding (a plate with rounded corners and six holes: 20 quarter
+  // turns for the holes, 4 fillets, 28 interior cones for 24 allowed, and every
+  // fillet placement was refused)
+  const bool greedy = options.interior == InteriorCones::greedy;
+  int fillet_cone_count = 0;
+  if (greedy && options.fillet_cones)
+    for (const BoundaryCorner& fillet : fillet_corners(soup, size)) fillet_cone_count += convex_fillet(fillet);
   if (options.square_crowded_holes && deficit < 0)
-    deficit += square_crowded_holes(soup, adjacency, size, -deficit > allowed, options, cones);
+    deficit += square_crowded_holes(soup, adjacency, size, -deficit + 2 * fillet_cone_count > allowed, options, cones);
   // the cones on the boundary (the corners, then any boundary cones) come first;
   // the interior ones, which the settling moves, after them
   const std::size_t corners_only = cones.size();
   std::size_t corner_count = corners_only;
-  const bool greedy = options.interior == InteriorCones::greedy;
   if (greedy && deficit == 0 && !(options.pair_band_goal > 0)) return cones;
 
   const std::vector<double> curvature = vertex_curvature(soup, adjacency);

@@ -90,11 +90,12 @@ struct ConePlacementOptions {
   /// four valence-5 cones are still to place, they go on the hole a quarter of its
   /// length apart: the hole a square on the lattice.
   double square_hole_length = 8.0;
-  /// Where the corners leave more valence-5 cones than the bound allows, every
-  /// hole without corners at most square_hole_max_length quads round is made a
-  /// square in the same way, four boundary cones each (a hexagonal flange with a
-  /// bore and six bolt holes: 30 quarter turns for 24 cones allowed; its six
-  /// bolt holes squared, 6 interior cones).
+  /// Where the corners leave more interior cones than the bound allows (with
+  /// fillet_cones, each fillet's valence-3 cone and the valence-5 one it asks
+  /// counted), every hole without corners at most square_hole_max_length quads
+  /// round is made a square in the same way, four boundary cones each (a hexagonal
+  /// flange with a bore and six bolt holes: 30 quarter turns for 24 cones allowed;
+  /// its six bolt holes squared, 6 interior cones).
   bool square_crowded_holes = true;
   double square_hole_max_length = 16.0;
   /// With several boundary loops, each cone goes, among the vertices whose u is
