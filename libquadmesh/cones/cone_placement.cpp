@@ -678,7 +678,9 @@ std::vector<Cone> place_cones(const ConeMetricSolver& solver, double size, const
   if (greedy && options.fillet_cones)
     for (const BoundaryCorner& fillet : fillet_corners(soup, size)) fillet_cone_count += convex_fillet(fillet);
   if (options.square_crowded_holes && deficit < 0)
-    deficit += square_crowded_holes(soup, adjacency, size, -deficit + 2 * fillet_cone_count > allowed, options, cones);
+    deficit += square_crowded_holes(soup, adjacency, size,
+                                    options.square_every_hole || -deficit + 2 * fillet_cone_count > allowed, options,
+                                    cones);
   // the cones on the boundary (the corners, then any boundary cones) come first;
   // the interior ones, which the settling moves, after them
   const std::size_t corners_only = cones.size();

@@ -98,6 +98,8 @@ struct ConePlacementOptions {
   /// its six bolt holes squared, 6 interior cones).
   bool square_crowded_holes = true;
   double square_hole_max_length = 16.0;
+  /// Every such hole a square whether the corners crowd the bound or not.
+  bool square_every_hole = false;
   /// With several boundary loops, each cone goes, among the vertices whose u is
   /// within this of the extreme, where the field meets the loops best.
   double extreme_tolerance = 0.15;

@@ -90,6 +90,13 @@ std::vector<ConePlacementOptions> capped_placements() {
   return out;
 }
 
+std::vector<ConePlacementOptions> squared_hole_placements(bool fillets) {
+  ConePlacementOptions squared = cone_placements().front();
+  squared.square_every_hole = true;
+  squared.fillet_cones = fillets;
+  return {squared};
+}
+
 std::vector<ConePlacementOptions> fillet_placements() {
   std::vector<ConePlacementOptions> out = pairing_placements();
   for (ConePlacementOptions& with_fillets : out) with_fillets.fillet_cones = true;
@@ -503,11 +510,16 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
   // whether some placement's quads were sound, and whether one of those had
   // size_band_goal of them in the size band
   bool some_sound = false, sound_share_in_band = false;
-  bool fallbacks_added = false, capped_added = false, fillets_added = false, protrusion = false;
+  bool fallbacks_added = false, capped_added = false, fillets_added = false, squares_added = false,
+       protrusion = false;
   for (std::size_t start = 0; attempts_left > 0 && !found;) {
-    if (start >= placements.size()) {
-      if (interior != InteriorCones::greedy || fillets_added) break;
+    while (start >= placements.size() && interior == InteriorCones::greedy && !squares_added) {
       std::vector<ConePlacementOptions> more;
+      const auto convex_fillets = [&] {
+        const std::vector<BoundaryCorner> fillets =
+            fillet_corners(setup.soup, setup.preamble.size_requested * lattice_factor);
+        return std::any_of(fillets.begin(), fillets.end(), convex_fillet);
+      };
       if (!fallbacks_added && !sound_share_in_band && !capped_added) {
         fallbacks_added = true;
         more = fallback_placements(some_sound);
@@ -515,17 +527,19 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
         // the protrusions' caps after those: their cones move what the others settle
         capped_added = true;
         more = capped_placements();
-      } else {
-        // the fillets' cones last, where the part has convex fillets and no
-        // protrusion lacks its caps' cones (the fillet placements have no caps)
+      } else if (!fillets_added) {
+        // the fillets' cones, where the part has convex fillets and no protrusion
+        // lacks its caps' cones (the fillet placements have no caps)
         fillets_added = true;
-        const std::vector<BoundaryCorner> fillets =
-            fillet_corners(setup.soup, setup.preamble.size_requested * lattice_factor);
-        if (!protrusion && std::any_of(fillets.begin(), fillets.end(), convex_fillet)) more = fillet_placements();
-        if (more.empty()) break;
+        if (!protrusion && convex_fillets()) more = fillet_placements();
+      } else {
+        // the holes squares last (no caps either)
+        squares_added = true;
+        if (!protrusion) more = squared_hole_placements(convex_fillets());
       }
       placements.insert(placements.end(), more.begin(), more.end());
     }
+    if (start >= placements.size()) break;
     const std::size_t count = std::min({width, placements.size() - start, static_cast<std::size_t>(attempts_left)});
     std::vector<ConeAttempt> attempts;
     if (count == 1) {  // on this thread, its progress as it goes
@@ -625,8 +639,9 @@ ConeCandidate placements_candidate(const FormSetup& setup, const QuadMeshOptions
                                    Stages& stages) {
   std::string failure;
   // every placement, the fallbacks, the capped ones and those with the fillets' cones
-  int every_placement = static_cast<int>(cone_placements(InteriorCones::greedy, has_handles(input)).size() + 2 +
-                                         capped_placements().size() + fillet_placements().size());
+  int every_placement =
+      static_cast<int>(cone_placements(InteriorCones::greedy, has_handles(input)).size() + 2 +
+                       capped_placements().size() + fillet_placements().size() + squared_hole_placements(true).size());
   // (the cones rounded first only: every placement mapped again with the
   // translations rounded first, where none gave sound quads, made none of the 33
   // shared meshes, examples, parts and scan cuts sound; the scans' maps lost their

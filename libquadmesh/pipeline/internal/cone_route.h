@@ -108,6 +108,13 @@ std::vector<ConePlacementOptions> capped_placements();
 /// and 2.6 x.
 std::vector<ConePlacementOptions> fillet_placements();
 
+/// Tried last of all (greedy) when no placement was acceptable and none was
+/// refused as an UncappedProtrusion: the first placement of cone_placements() with
+/// every hole up to square_hole_max_length quads round a square
+/// (ConePlacementOptions::square_every_hole), and with fillet_cones where the part
+/// has convex fillets (`fillets`).
+std::vector<ConePlacementOptions> squared_hole_placements(bool fillets);
+
 /// Tried, greedy, when the greedy placements (and the lattices centred or finer)
 /// give nothing acceptable: the interior cones at the smoothest cross field's singularities
 /// (InteriorCones::cross_field), moved off the boundary (field_boundary_distance).
