@@ -610,15 +610,16 @@ int nearest_free(const TriangleSoup& soup, const std::vector<char>& eligible, co
   return nearest;
 }
 
-/// The interior cones of ConePlacementOptions::fillet_cones: per convex fillet
-/// corner (fillet_corners.h) at quads of edge `size`, a valence-3 cone at the
-/// vertex nearest the middle of its arc among those `eligible` and not `taken`,
-/// each marking the vertices within `spacing` taken and itself `pinned`. Adds them
-/// to `cones`; returns the quarter turns they carry.
-int place_fillet_cones(const TriangleSoup& soup, double size, const std::vector<char>& eligible, double spacing,
-                       std::vector<char>& taken, std::vector<char>& pinned, std::vector<Cone>& cones) {
+/// The interior cones of ConePlacementOptions::fillet_cones: per convex one of
+/// `fillets` (fillet_corners.h), a valence-3 cone at the vertex nearest the middle
+/// of its arc among those `eligible` and not `taken`, each marking the vertices
+/// within `spacing` taken and itself `pinned`. Adds them to `cones`; returns the
+/// quarter turns they carry.
+int place_fillet_cones(const TriangleSoup& soup, const std::vector<BoundaryCorner>& fillets,
+                       const std::vector<char>& eligible, double spacing, std::vector<char>& taken,
+                       std::vector<char>& pinned, std::vector<Cone>& cones) {
   int carried = 0;
-  for (const BoundaryCorner& fillet : fillet_corners(soup, size)) {
+  for (const BoundaryCorner& fillet : fillets) {
     if (!convex_fillet(fillet)) continue;
     const int nearest = nearest_free(soup, eligible, taken, fillet.vertex);
     if (nearest < 0) continue;  // no room: the greedy placement takes its turn
@@ -674,9 +675,9 @@ std::vector<Cone> place_cones(const ConeMetricSolver& solver, double size, const
   // turns for the holes, 4 fillets, 28 interior cones for 24 allowed, and every
   // fillet placement was refused)
   const bool greedy = options.interior == InteriorCones::greedy;
-  int fillet_cone_count = 0;
-  if (greedy && options.fillet_cones)
-    for (const BoundaryCorner& fillet : fillet_corners(soup, size)) fillet_cone_count += convex_fillet(fillet);
+  const std::vector<BoundaryCorner> fillets =
+      greedy && options.fillet_cones ? fillet_corners(soup, size) : std::vector<BoundaryCorner>{};
+  const auto fillet_cone_count = std::count_if(fillets.begin(), fillets.end(), convex_fillet);
   if (options.square_crowded_holes && deficit < 0)
     deficit += square_crowded_holes(soup, adjacency, size,
                                     options.square_every_hole || -deficit + 2 * fillet_cone_count > allowed, options,
@@ -760,13 +761,13 @@ std::vector<Cone> place_cones(const ConeMetricSolver& solver, double size, const
   std::vector<char> pinned(soup.points.size(), 0);
   if (greedy && options.fillet_cones) {
     const int before = static_cast<int>(cones.size());
-    deficit -= place_fillet_cones(soup, size, eligible, spacing, taken, pinned, cones);
-    const int fillets = static_cast<int>(cones.size()) - before;
-    if (fillets + std::abs(deficit) > allowed)
+    deficit -= place_fillet_cones(soup, fillets, eligible, spacing, taken, pinned, cones);
+    const int placed = static_cast<int>(cones.size()) - before;
+    if (placed + std::abs(deficit) > allowed)
       throw Error(ErrorCode::unsupported,
                   fmt::format("the {} fillets' cones and the {} quarter turns the corners leave after them are more "
                               "than the {:.0f} interior cones allowed",
-                              fillets, std::abs(deficit), allowed));
+                              placed, std::abs(deficit), allowed));
   }
   const int step = deficit > 0 ? 1 : -1;  // valence 3 (+1 quarter turn) or 5 (-1)
   while (deficit != 0) {

@@ -461,6 +461,11 @@ void judge_as_written(ConeCandidate& cones, const QuadMeshOptions& options, doub
   c.result.judged_deviation = cones.distance * diagonal;
 }
 
+/// What cones_replace and criteria_missed weigh of a cone candidate.
+RouteJudgement route_judgement(const ConeCandidate& c) {
+  return {c.candidate.quality, c.band, corner_mismatches(c.candidate.result)};
+}
+
 /// Whether the sound candidate `later` comes nearer the route's acceptance than
 /// `kept`, a placement before it: fewer of the criteria missed (criteria_missed:
 /// the band, the corners, the shape; and the distance to S where it was judged,
@@ -471,8 +476,7 @@ void judge_as_written(ConeCandidate& cones, const QuadMeshOptions& options, doub
 /// one 5.5 x the size at a fillet; the fillets' cones, tried last, 89% and 3.0 x.
 bool closer_to_acceptance(const ConeCandidate& later, const ConeCandidate& kept, const AcceptanceCriteria& criteria) {
   const auto missed = [&](const ConeCandidate& c) {
-    const RouteJudgement judged{c.candidate.quality, c.band, corner_mismatches(c.candidate.result)};
-    return criteria_missed(judged, criteria) + static_cast<int>(c.distance > criteria.max_hausdorff_relative);
+    return criteria_missed(route_judgement(c), criteria) + static_cast<int>(c.distance > criteria.max_hausdorff_relative);
   };
   const int later_missed = missed(later), kept_missed = missed(kept);
   if (later_missed != kept_missed) return later_missed < kept_missed;
@@ -770,7 +774,7 @@ ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOpt
     ConeCandidate tried = first.tried ? std::move(*first.tried) : cone_candidate(setup, options, input, stages);
     judge_as_written(tried, options, setup.diagonal, input, stages);
     Candidate& cones = tried.candidate;
-    const RouteJudgement judged{cones.quality, tried.band, corner_mismatches(cones.result)};
+    const RouteJudgement judged = route_judgement(tried);
     if (!cones_replace(judged, abel, input, options.acceptance)) {
       outcome.failure = fmt::format(
           "the cones' quads were not better ({}; {:.0f}% in the size band against {:.0f}%; {} corners with the wrong "
