@@ -395,15 +395,16 @@ std::array<int, 4> quarter_points(const TriangleSoup& soup, const std::vector<in
 }
 
 /// The vertex of `hole` a quarter of a quarter of its length (45 degrees round
-/// it) on from its vertex nearest the other boundary loops: the lattice follows
+/// it) on from its vertex nearest the loops `facing` marks: the lattice follows
 /// the nearest boundary, and a square hole on it has its corners at 45 degrees to
 /// that boundary's normal.
-int square_start(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const std::vector<int>& hole, int loop) {
+int square_start(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const std::vector<int>& hole,
+                 const std::vector<char>& facing) {
   int nearest = hole.front();
   double best = std::numeric_limits<double>::infinity();
   for (int v : hole)
     for (std::size_t l = 0; l < adjacency.boundary_loops.size(); ++l) {
-      if (static_cast<int>(l) == loop) continue;
+      if (!facing[l]) continue;
       for (int w : adjacency.boundary_loops[l])
         if (const double d = (soup.points[static_cast<std::size_t>(v)] - soup.points[static_cast<std::size_t>(w)]).squaredNorm();
             d < best) {
@@ -444,14 +445,21 @@ int square_crowded_holes(const TriangleSoup& soup, const SurfaceAdjacency& adjac
   std::vector<double> lengths;
   for (const std::vector<int>& loop : adjacency.boundary_loops) lengths.push_back(loop_length(soup, loop));
   const double longest = *std::max_element(lengths.begin(), lengths.end());
+  // the loops with corners or too long to be squares: the lattice's frame (holes
+  // too short for four cones are neither)
+  std::vector<char> frame(lengths.size(), 0);
+  for (std::size_t l = 0; l < lengths.size(); ++l)
+    frame[l] = cornered[l] || lengths[l] >= longest || lengths[l] > options.square_hole_max_length * size;
   int taken = 0;
   for (std::size_t l = 0; l < lengths.size(); ++l) {
-    if (cornered[l] || lengths[l] >= longest || lengths[l] > options.square_hole_max_length * size ||
-        lengths[l] < 4 * options.boundary_cone_spacing * size)
-      continue;
+    if (frame[l] || lengths[l] < 4 * options.boundary_cone_spacing * size) continue;
+    std::vector<char> facing = frame;  // the frame's loops, or every other loop
+    if (!options.squares_face_frame) {
+      std::fill(facing.begin(), facing.end(), 1);
+      facing[l] = 0;
+    }
     const std::vector<int>& hole = adjacency.boundary_loops[l];
-    for (int v : quarter_points(soup, hole, square_start(soup, adjacency, hole, static_cast<int>(l))))
-      cones.push_back({v, 3});
+    for (int v : quarter_points(soup, hole, square_start(soup, adjacency, hole, facing))) cones.push_back({v, 3});
     taken += 4;
   }
   return taken;

@@ -100,6 +100,13 @@ struct ConePlacementOptions {
   double square_hole_max_length = 16.0;
   /// Every such hole a square whether the corners crowd the bound or not.
   bool square_every_hole = false;
+  /// A square's corners go at 45 degrees to the normal of the nearest loop of the
+  /// frame (a loop with corners, or too long to be a square) rather than of the
+  /// nearest loop: beside another hole made a square, the nearest loop turns the
+  /// square by the angle between the two holes (a 120 x 50 plate with seven holes,
+  /// its squares turned 30-40 degrees against its edges, folds every map between
+  /// them; turned to its edges, none).
+  bool squares_face_frame = false;
   /// With several boundary loops, each cone goes, among the vertices whose u is
   /// within this of the extreme, where the field meets the loops best.
   double extreme_tolerance = 0.15;

@@ -768,3 +768,69 @@ TEST_CASE("a hexagonal flange whose corners leave more valence-5 cones than allo
   CHECK(squares == 6);
   CHECK(interior_turns == -6);
 }
+
+/// Per hole of `adjacency` with four cones in three quads on it (a square), the
+/// largest angle (radians) by which a cone's direction from the hole's centre
+/// strays from the diagonals of the plane's x and y axes.
+std::vector<double> square_turns(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
+                                 const std::vector<Cone>& cones) {
+  std::map<int, std::vector<Cone>> on_loop;
+  for (const Cone& c : cones)
+    if (const int loop = adjacency.loop_of_vertex[static_cast<std::size_t>(c.vertex)]; loop >= 0 && c.quads == 3)
+      on_loop[loop].push_back(c);
+  std::vector<double> turns;
+  for (const auto& [loop, on] : on_loop) {
+    if (on.size() != 4) continue;
+    const std::vector<int>& hole = adjacency.boundary_loops[static_cast<std::size_t>(loop)];
+    Vec3 centre = Vec3::Zero();
+    for (int v : hole) centre += soup.points[static_cast<std::size_t>(v)];
+    centre /= static_cast<double>(hole.size());
+    double turn = 0;
+    for (const Cone& c : on) {
+      const Vec3 d = soup.points[static_cast<std::size_t>(c.vertex)] - centre;
+      turn = std::max(turn, std::abs(std::remainder(std::atan2(d.y(), d.x()) - M_PI / 4, M_PI / 2)));
+    }
+    turns.push_back(turn);
+  }
+  return turns;
+}
+
+TEST_CASE("holes side by side made squares: turned to the plate's edges, not to each other, the map does not fold") {
+  // a generated plate (scripts/plate-sweep p13): 120 x 50, sharp corners, seven
+  // holes of radius 3-4.6 (10-15 quads round) whose 28 quarter turns crowd the 24
+  // interior cones allowed, so every hole is made a square. Turned to the nearest
+  // loop, a hole beside another turns its square by the angle between the two
+  // (30-40 degrees against the plate's edges) and the map folds between them;
+  // turned to the frame (the plate's edges), every square is on the plate's axes
+  const double size = 0.015 * std::hypot(120.0, 50.0);
+  io::ReadOptions read;
+  read.quad_size = size;
+  const TriangleSoup soup =
+      io::read_surface(test::write_text(test::scratch_dir("squares_facing_frame"), "plate.geo",
+                                        "SetFactory(\"OpenCASCADE\");\n"
+                                        "Rectangle(1) = {0, 0, 0, 120, 50};\n"
+                                        "Disk(2) = {52.78, 8.49, 0, 3.91}; Disk(3) = {106.45, 22.66, 0, 4.62};\n"
+                                        "Disk(4) = {53.22, 41.52, 0, 3.04}; Disk(5) = {90.68, 30.67, 0, 4.48};\n"
+                                        "Disk(6) = {56.39, 30.13, 0, 3.15}; Disk(7) = {21.40, 30.85, 0, 3.52};\n"
+                                        "Disk(8) = {79.84, 17.41, 0, 3.98};\n"
+                                        "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:8}; Delete; }\n"),
+                       read)
+          .soup;
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  REQUIRE(euler_characteristic(adjacency) == -6);
+  ConePlacementOptions nearest;
+  nearest.pair_band_goal = 0;  // the corners' and the squares' cones only
+  ConePlacementOptions facing_frame = nearest;
+  facing_frame.squares_face_frame = true;
+  const std::vector<Cone> turned_cones = place_cones(soup, adjacency, size, nearest);
+  const std::vector<double> turned = square_turns(soup, adjacency, turned_cones);
+  REQUIRE(turned.size() == 7);
+  CHECK(*std::max_element(turned.begin(), turned.end()) > 0.45);  // 30 degrees
+  CHECK(cone_map(soup, adjacency, turned_cones, size).report.inverted_triangles > 0);  // 3
+  const std::vector<Cone> cones = place_cones(soup, adjacency, size, facing_frame);
+  CHECK(cones.size() == 4 + 28);
+  const std::vector<double> square = square_turns(soup, adjacency, cones);
+  REQUIRE(square.size() == 7);
+  CHECK(*std::max_element(square.begin(), square.end()) < 0.2);
+  check_unfolded_quads(soup, adjacency, cones, size, {-6, 0});
+}

@@ -473,11 +473,18 @@ TEST_CASE("last, every small hole a square: a plate with 1.5-quad fillets and th
   // placement had 89% in the band (the Abel quads 36%, 6.8 x). The holes squares
   // (four boundary cones each), the fillets' valence-3 cones beside them
   const std::vector<ConePlacementOptions> last = squared_hole_placements(true);
-  REQUIRE(last.size() == 1);
-  CHECK(last[0].square_every_hole);
-  CHECK(last[0].fillet_cones);
-  CHECK(!squared_hole_placements(false)[0].fillet_cones);
-  for (const ConePlacementOptions& p : cone_placements()) CHECK(!p.square_every_hole);
+  REQUIRE(last.size() == 2);
+  for (const ConePlacementOptions& p : last) {
+    CHECK(p.square_every_hole);
+    CHECK(p.fillet_cones);
+  }
+  CHECK(!last[0].squares_face_frame);
+  CHECK(last[1].squares_face_frame);
+  for (const ConePlacementOptions& p : squared_hole_placements(false)) CHECK(!p.fillet_cones);
+  for (const ConePlacementOptions& p : cone_placements()) {
+    CHECK(!p.square_every_hole);
+    CHECK(!p.squares_face_frame);
+  }
   TriangleSoup input;
   const QuadMeshResult r = mesh_geo_text(
       "plate_fillets_three_holes",
@@ -488,6 +495,28 @@ TEST_CASE("last, every small hole a square: a plate with 1.5-quad fillets and th
       input);
   check_cone_acceptance(r, input, -2, 4, 0.9, 0);
   CHECK(boundary_cone_count(r) == 12);
+}
+
+TEST_CASE("holes crowded side by side: their squares turned to the plate's edges, tried last, meet every criterion" *
+          doctest::test_suite("slow")) {
+  // generated plate p13 (scripts/plate-sweep): 120 x 50, sharp corners, seven holes
+  // that crowd the interior cones allowed, so every placement makes them squares,
+  // each turned to its nearest loop: beside another hole, 30 degrees off the plate's
+  // axes, and every map folds between them (the Abel quads were kept: 77% in the
+  // band, 4.0 x). The squares turned to the plate's edges (tests/cones
+  // test_cone_map.cpp) do not fold: no interior cone, every quad in the band
+  TriangleSoup input;
+  const QuadMeshResult r = mesh_geo_text(
+      "plate_seven_holes",
+      "SetFactory(\"OpenCASCADE\");\n"
+      "Rectangle(1) = {0, 0, 0, 120, 50};\n"
+      "Disk(2) = {52.78, 8.49, 0, 3.91}; Disk(3) = {106.45, 22.66, 0, 4.62}; Disk(4) = {53.22, 41.52, 0, 3.04};\n"
+      "Disk(5) = {90.68, 30.67, 0, 4.48}; Disk(6) = {56.39, 30.13, 0, 3.15}; Disk(7) = {21.40, 30.85, 0, 3.52};\n"
+      "Disk(8) = {79.84, 17.41, 0, 3.98};\n"
+      "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:8}; Delete; }\n",
+      input);
+  CHECK(check_cone_acceptance(r, input, -6, 8, 0.95, 4).irregular_interior == 0);
+  CHECK(boundary_cone_count(r) == 4 + 28);
 }
 
 TEST_CASE("parts whose greedy cones leave the sizes off take the smoothest cross field's singularities after them" *

@@ -94,7 +94,9 @@ std::vector<ConePlacementOptions> squared_hole_placements(bool fillets) {
   ConePlacementOptions squared = cone_placements().front();
   squared.square_every_hole = true;
   squared.fillet_cones = fillets;
-  return {squared};
+  ConePlacementOptions facing_frame = squared;
+  facing_frame.squares_face_frame = true;
+  return {squared, facing_frame};
 }
 
 std::vector<ConePlacementOptions> fillet_placements() {

@@ -112,7 +112,9 @@ std::vector<ConePlacementOptions> fillet_placements();
 /// refused as an UncappedProtrusion: the first placement of cone_placements() with
 /// every hole up to square_hole_max_length quads round a square
 /// (ConePlacementOptions::square_every_hole), and with fillet_cones where the part
-/// has convex fillets (`fillets`).
+/// has convex fillets (`fillets`); then the same with the squares turned to the
+/// frame (ConePlacementOptions::squares_face_frame: where holes crowd, every
+/// placement squares them as the first does, so this is the one new placement).
 std::vector<ConePlacementOptions> squared_hole_placements(bool fillets);
 
 /// Tried, greedy, when the greedy placements (and the lattices centred or finer)
