@@ -474,8 +474,10 @@ int square_crowded_holes(const TriangleSoup& soup, const SurfaceAdjacency& adjac
 /// turns or more (protrusion_caps.h: an ear, a stub), that many pairs at once, each
 /// valence-3 cone at the lowest u in the region as the earlier ones leave it, and
 /// those cones pinned: `settle(set, pinned)` moves the others. Each step is
-/// weighed after `settle` has moved the cones (loops aligned, sizes evened), and
-/// kept only when the band improves; at most `room` cones are added. The sizes
+/// weighed after `settle` has moved the cones (loops aligned, sizes evened); the
+/// best set is kept, after options.pair_patience steps that do not better it (none
+/// once it has options.pair_patience_below of the area in the band); at most
+/// `room` cones are added. The sizes
 /// are judged as relax_cones_for_size judges them (`tip_size`).
 template <class Settle>
 void add_cone_pairs(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const ConeMetricSolver& solver,
@@ -524,8 +526,19 @@ void add_cone_pairs(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
   };
   Eigen::VectorXd u;
   MetricBand band = measure(cones, u);
+  // the best set so far, and the steps taken since it (each one a pair or a cap
+  // that did not better it)
+  std::vector<Cone> best = cones;
+  MetricBand best_band = band;
+  int since_best = 0;
+  const auto bettered = [](const MetricBand& a, const MetricBand& b) {
+    return !(a.share <= b.share && a.largest >= b.largest);
+  };
   while (room >= 2) {
-    if (band.share >= options.pair_band_goal && band.largest <= options.pair_largest) return;
+    if (band.share >= options.pair_band_goal && band.largest <= options.pair_largest) {
+      best = cones;
+      break;
+    }
     const std::vector<char> free = free_vertices(cones);
     int high = -1, low = -1;
     for (std::size_t v = 0; v < free.size(); ++v) {
@@ -542,10 +555,10 @@ void add_cone_pairs(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                                       cones);
       if (edge >= 0 && high >= 0 && u[edge] <= u[high]) edge = -1;
     }
-    if ((high < 0 && edge < 0) || low < 0) return;
+    if ((high < 0 && edge < 0) || low < 0) break;
     const int five = edge >= 0 ? edge : high;
     const Vec3 between = soup.points[static_cast<std::size_t>(five)] - soup.points[static_cast<std::size_t>(low)];
-    if (between.squaredNorm() < spacing * spacing) return;
+    if (between.squaredNorm() < spacing * spacing) break;
     std::vector<Cone> trial = cones;
     std::vector<char> trial_pinned = pinned;
     // a protrusion: the quarter turns its cap lacks, all at once
@@ -563,13 +576,20 @@ void add_cone_pairs(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
     settle(trial, trial_pinned);
     Eigen::VectorXd trial_u;
     const MetricBand trial_band = measure(trial, trial_u);
-    if (trial_band.share <= band.share && trial_band.largest >= band.largest) return;
+    if (bettered(trial_band, best_band)) {
+      best = trial;
+      best_band = trial_band;
+      since_best = 0;
+    } else if (best_band.share >= options.pair_patience_below || ++since_best > options.pair_patience) {
+      break;
+    }
     cones = std::move(trial);
     pinned = std::move(trial_pinned);
     u = std::move(trial_u);
     band = trial_band;
     room -= added;
   }
+  cones = std::move(best);
 }
 
 /// Whether the metric `u` (its band `band`) of `cones` has quads above

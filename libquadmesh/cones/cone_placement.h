@@ -129,6 +129,16 @@ struct ConePlacementOptions {
   double pair_band_goal = 0.95;
   /// ...or a quad size somewhere above this many times the size.
   double pair_largest = 3.0;
+  /// A pair (or a cap) that betters neither the share in the band nor the largest
+  /// quad of the best set so far ends the pairs, unless that set has less than
+  /// pair_patience_below of the area in the band: then up to pair_patience more
+  /// go in before the best set is taken back. The first pairs toward the largest
+  /// quads can make the sizes worse before the next ones make them better (a scan
+  /// of a kitten cut with three holes: 65% of the area in the band, 58% after the
+  /// first pair, then 63%, 73%, ... 90%; the 45-degree gusset's first placement
+  /// 83% -> 60% -> 92%).
+  int pair_patience = 2;
+  double pair_patience_below = 0.9;
   /// Where the quads are above pair_largest x the size in a region away from the
   /// boundary that lacks two quarter turns or more (protrusion_caps.h: an ear, a
   /// stub), the pairs go in that many at once, each valence-3 cone at the lowest u

@@ -478,13 +478,17 @@ TEST_CASE("a T-plate: cones placed farther from the boundary and apart map witho
 }
 
 TEST_CASE("a map folded round cones it winds a turn short stops stiffening once its folds grow again") {
-  // the T-plate's default placement (above): after the quantization 198 folded
-  // triangles round 5 valence-5 cones the map winds a quarter turn instead of five;
-  // one round of stiffening leaves 167, the next 198 again. The rounds after that
-  // (up to the patience's four without fewer folds) would each cost a factorization
+  // the T-plate's placement (above) with its pairs ending at the first that does
+  // not better the band (ConePlacementOptions::pair_patience 0, the default before
+  // it): after the quantization 198 folded triangles round 5 valence-5 cones the
+  // map winds a quarter turn instead of five; one round of stiffening leaves 167,
+  // the next 198 again. The rounds after that (up to the stiffening's patience of
+  // four without fewer folds) would each cost a factorization
   const TriangleSoup soup = example_at("t-plate-two-holes.geo", 2.343);
   const SurfaceAdjacency adjacency = surface_adjacency(soup);
-  const std::vector<Cone> cones = place_cones(soup, adjacency, 2.343);
+  ConePlacementOptions first_stop;
+  first_stop.pair_patience = 0;
+  const std::vector<Cone> cones = place_cones(soup, adjacency, 2.343, first_stop);
   const ConeMap m = cone_map(soup, adjacency, cones, 2.343);
   CHECK(m.report.inverted_triangles > 0);
   CHECK(m.misturned.size() == 5);

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 
 namespace qm::test {
 
@@ -194,6 +195,44 @@ TriangleSoup l_shape(int n) {
       s.triangles.push_back({point(i, j), point(i + 1, j + 1), point(i, j + 1)});
     }
   return s;
+}
+
+/// `soup` without the triangles within `rings` rings of each vertex of `centres`
+/// (each ring: the triangles at the vertices the last one reached), its unused
+/// points dropped: a blocky hole cut out of a scan, as the shared ones were.
+TriangleSoup cut_holes(const TriangleSoup& soup, const std::vector<int>& centres, int rings) {
+  std::vector<std::vector<std::size_t>> at(soup.points.size());
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f)
+    for (int v : soup.triangles[f]) at[static_cast<std::size_t>(v)].push_back(f);
+  std::vector<char> removed(soup.triangles.size(), 0);
+  for (int centre : centres) {
+    std::set<int> front{centre};
+    for (int r = 0; r < rings; ++r) {
+      std::set<int> next;
+      for (int v : front)
+        for (std::size_t f : at[static_cast<std::size_t>(v)])
+          if (!removed[f]) {
+            removed[f] = 1;
+            next.insert(soup.triangles[f].begin(), soup.triangles[f].end());
+          }
+      front = std::move(next);
+    }
+  }
+  TriangleSoup out;
+  std::vector<int> index(soup.points.size(), -1);
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
+    if (removed[f]) continue;
+    Triangle t = soup.triangles[f];
+    for (int& v : t) {
+      if (index[static_cast<std::size_t>(v)] < 0) {
+        index[static_cast<std::size_t>(v)] = static_cast<int>(out.points.size());
+        out.points.push_back(soup.points[static_cast<std::size_t>(v)]);
+      }
+      v = index[static_cast<std::size_t>(v)];
+    }
+    out.triangles.push_back(t);
+  }
+  return out;
 }
 
 void write_obj(const TriangleSoup& soup, const std::string& path) {

@@ -58,6 +58,11 @@ TriangleSoup grid(int n);
 /// unit square, each split in two (a disk with five convex corners and one concave).
 TriangleSoup l_shape(int n);
 
+/// `soup` without the triangles within `rings` rings of each vertex of `centres`
+/// (each ring: the triangles at the vertices the last one reached), its unused
+/// points dropped: a blocky hole cut out of a scan, as the shared ones were.
+TriangleSoup cut_holes(const TriangleSoup& soup, const std::vector<int>& centres, int rings);
+
 /// Writes a soup as OBJ (for command-line tests).
 void write_obj(const TriangleSoup& soup, const std::string& path);
 
