@@ -19,8 +19,10 @@
 #include "tests/support/test_meshes.h"
 
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <set>
 
 using namespace qm;
@@ -56,6 +58,19 @@ QuadMeshResult mesh_cad_part(const std::string& path, TriangleSoup& input, const
 /// mesh_cad_part of a .geo `text`, written to a scratch folder `name`.
 QuadMeshResult mesh_geo_text(const std::string& name, const std::string& text, TriangleSoup& input) {
   return mesh_cad_part(test::write_text(test::scratch_dir(name), name + ".geo", text), input);
+}
+
+/// A generated plate's .geo text (scripts/plate-sweep): a `width` x `height`
+/// rectangle, its corners rounded with radius `fillet` (0: sharp), minus the round
+/// holes {x, y, radius}.
+std::string plate_geo(double width, double height, double fillet, const std::vector<std::array<double, 3>>& holes) {
+  std::string text = "SetFactory(\"OpenCASCADE\");\n";
+  text += fillet > 0 ? fmt::format("Rectangle(1) = {{0, 0, 0, {}, {}, {}}};\n", width, height, fillet)
+                     : fmt::format("Rectangle(1) = {{0, 0, 0, {}, {}}};\n", width, height);
+  for (std::size_t i = 0; i < holes.size(); ++i)
+    text += fmt::format("Disk({}) = {{{}, {}, 0, {}}};\n", i + 2, holes[i][0], holes[i][1], holes[i][2]);
+  return text + fmt::format("BooleanDifference{{ Surface{{1}}; Delete; }}{{ Surface{{2:{}}}; Delete; }}\n",
+                            holes.size() + 1);
 }
 
 /// Issue 18's acceptance on the quads `q` of a surface with `chi` and `loops`:
@@ -391,14 +406,7 @@ TEST_CASE("a plate with rounded corners and six holes: its fillets' cones count 
   // every fillet placement was refused: the Abel quads were kept (64% in the band,
   // 3.7 x). Counted, the crowding makes the holes squares
   TriangleSoup input;
-  const QuadMeshResult r = mesh_geo_text(
-      "plate_fillets_six_holes",
-      "SetFactory(\"OpenCASCADE\");\n"
-      "Rectangle(1) = {0, 0, 0, 150, 50, 10};\n"
-      "Disk(2) = {122.11, 20.79, 0, 4.67}; Disk(3) = {26.16, 42.26, 0, 3.11}; Disk(4) = {118.24, 39.33, 0, 5.60};\n"
-      "Disk(5) = {8.58, 26.46, 0, 4.43}; Disk(6) = {40.01, 13.69, 0, 4.42}; Disk(7) = {91.62, 24.62, 0, 4.57};\n"
-      "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:7}; Delete; }\n",
-      input);
+  const QuadMeshResult r = mesh_geo_text("plate_fillets_six_holes", test::edge_hole_plate_geo(), input);
   check_cone_acceptance(r, input, -5, 7, 0.9, 0);
   const int on_holes = boundary_cone_count(r);
   CHECK(on_holes % 4 == 0);
@@ -411,15 +419,10 @@ TEST_CASE("where no placement is acceptable, the sound one nearest the acceptanc
   // the first sound placement had 86% of its quads in the band, one 3.9 x the size;
   // a later one meets every criterion
   TriangleSoup input;
-  const QuadMeshResult r = mesh_geo_text(
-      "plate_seven_holes",
-      "SetFactory(\"OpenCASCADE\");\n"
-      "Rectangle(1) = {0, 0, 0, 150, 60};\n"
-      "Disk(2) = {22.66, 41.44, 0, 3.51}; Disk(3) = {138.04, 36.83, 0, 6.86}; Disk(4) = {99.40, 29.31, 0, 5.88};\n"
-      "Disk(5) = {28.28, 11.18, 0, 5.46}; Disk(6) = {113.68, 47.75, 0, 6.91}; Disk(7) = {86.29, 16.83, 0, 6.33};\n"
-      "Disk(8) = {78.73, 44.04, 0, 6.91};\n"
-      "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:8}; Delete; }\n",
-      input);
+  const std::vector<std::array<double, 3>> holes{{22.66, 41.44, 3.51}, {138.04, 36.83, 6.86}, {99.40, 29.31, 5.88},
+                                                {28.28, 11.18, 5.46}, {113.68, 47.75, 6.91}, {86.29, 16.83, 6.33},
+                                                {78.73, 44.04, 6.91}};
+  const QuadMeshResult r = mesh_geo_text("plate_seven_holes", plate_geo(150, 60, 0, holes), input);
   check_cone_acceptance(r, input, -6, 8, 0.9, 4);
   // a U-channel plate: its greedy placement nearest the acceptance, on a lattice
   // centred on the band, meets every criterion (the first sound one did not, and the
@@ -448,13 +451,8 @@ TEST_CASE("last, every small hole a square: a plate with 1.5-quad fillets and th
     CHECK(!p.squares_face_frame);
   }
   TriangleSoup input;
-  const QuadMeshResult r = mesh_geo_text(
-      "plate_fillets_three_holes",
-      "SetFactory(\"OpenCASCADE\");\n"
-      "Rectangle(1) = {0, 0, 0, 200, 80, 5};\n"
-      "Disk(2) = {148.42, 52.65, 0, 5.03}; Disk(3) = {31.10, 13.16, 0, 7.63}; Disk(4) = {144.50, 24.99, 0, 5.69};\n"
-      "BooleanDifference{ Surface{1}; Delete; }{ Surface{2, 3, 4}; Delete; }\n",
-      input);
+  const std::vector<std::array<double, 3>> holes{{148.42, 52.65, 5.03}, {31.10, 13.16, 7.63}, {144.50, 24.99, 5.69}};
+  const QuadMeshResult r = mesh_geo_text("plate_fillets_three_holes", plate_geo(200, 80, 5, holes), input);
   check_cone_acceptance(r, input, -2, 4, 0.9, 0);
   CHECK(boundary_cone_count(r) == 12);
 }
@@ -468,15 +466,10 @@ TEST_CASE("holes crowded side by side: their squares turned to the plate's edges
   // band, 4.0 x). The squares turned to the plate's edges (tests/cones
   // test_cone_map.cpp) do not fold: no interior cone, every quad in the band
   TriangleSoup input;
-  const QuadMeshResult r = mesh_geo_text(
-      "plate_seven_holes",
-      "SetFactory(\"OpenCASCADE\");\n"
-      "Rectangle(1) = {0, 0, 0, 120, 50};\n"
-      "Disk(2) = {52.78, 8.49, 0, 3.91}; Disk(3) = {106.45, 22.66, 0, 4.62}; Disk(4) = {53.22, 41.52, 0, 3.04};\n"
-      "Disk(5) = {90.68, 30.67, 0, 4.48}; Disk(6) = {56.39, 30.13, 0, 3.15}; Disk(7) = {21.40, 30.85, 0, 3.52};\n"
-      "Disk(8) = {79.84, 17.41, 0, 3.98};\n"
-      "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:8}; Delete; }\n",
-      input);
+  const std::vector<std::array<double, 3>> holes{{52.78, 8.49, 3.91}, {106.45, 22.66, 4.62}, {53.22, 41.52, 3.04},
+                                                {90.68, 30.67, 4.48}, {56.39, 30.13, 3.15}, {21.40, 30.85, 3.52},
+                                                {79.84, 17.41, 3.98}};
+  const QuadMeshResult r = mesh_geo_text("plate_seven_crowded_holes", plate_geo(120, 50, 0, holes), input);
   CHECK(check_cone_acceptance(r, input, -6, 8, 0.95, 4).irregular_interior == 0);
   CHECK(boundary_cone_count(r) == 4 + 28);
 }
