@@ -518,14 +518,19 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
   bool some_sound = false, sound_share_in_band = false;
   bool fallbacks_added = false, capped_added = false, fillets_added = false, squares_added = false,
        protrusion = false;
+  // whether the part has convex fillets, found once when a stage first asks
+  std::optional<bool> has_convex_fillets;
+  const auto convex_fillets = [&] {
+    if (!has_convex_fillets) {
+      const std::vector<BoundaryCorner> fillets =
+          fillet_corners(setup.soup, setup.preamble.size_requested * lattice_factor);
+      has_convex_fillets = std::any_of(fillets.begin(), fillets.end(), convex_fillet);
+    }
+    return *has_convex_fillets;
+  };
   for (std::size_t start = 0; attempts_left > 0 && !found;) {
     while (start >= placements.size() && interior == InteriorCones::greedy && !squares_added) {
       std::vector<ConePlacementOptions> more;
-      const auto convex_fillets = [&] {
-        const std::vector<BoundaryCorner> fillets =
-            fillet_corners(setup.soup, setup.preamble.size_requested * lattice_factor);
-        return std::any_of(fillets.begin(), fillets.end(), convex_fillet);
-      };
       if (!fallbacks_added && !sound_share_in_band && !capped_added) {
         fallbacks_added = true;
         more = fallback_placements(some_sound);
