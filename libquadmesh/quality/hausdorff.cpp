@@ -49,6 +49,47 @@ std::vector<Vec3> surface_samples(const std::vector<Vec3>& points,
   return samples;
 }
 
+namespace {
+
+/// farthest_sample() takes the samples in blocks of this many, the same blocks
+/// whatever the number of threads, after a first look at every this many-th sample.
+constexpr std::size_t sample_block = 256;
+constexpr std::size_t first_look_stride = 64;
+/// A sample is passed over when a point of the surface is nearer to it than the
+/// farthest distance known by more than this (relative, on the squared
+/// distances): well above the closest-point query's round-off.
+constexpr double pass_over_margin = 1e-9;
+
+/// The farthest of samples [begin, end) and its squared distance (-1: none was
+/// queried). `known` is the squared distance of a sample already queried, a lower
+/// bound of the farthest. The closest point of the sample queried last is a point
+/// of the surface, so its distance to the next sample bounds that sample's
+/// distance from above: where the bound is below the farthest known, the sample
+/// cannot be the farthest and its query is not made (consecutive samples lie a
+/// fraction of a triangle apart, so most are passed over). The farthest sample,
+/// and its number, are those of querying every sample.
+std::pair<double, std::size_t> farthest_in_block(const TriangleTree& tree, const std::vector<Vec3>& samples,
+                                                 std::size_t begin, std::size_t end, double known) {
+  double worst = -1;
+  std::size_t at = begin;
+  bool queried = false;
+  Vec3 last_closest = Vec3::Zero();
+  for (std::size_t i = begin; i < end; ++i) {
+    const double bound = std::max(known, worst) * (1 - pass_over_margin);
+    if (queried && (samples[i] - last_closest).squaredNorm() < bound) continue;
+    const auto [squared, closest] = tree.squared_distance_and_closest(samples[i]);
+    last_closest = closest;
+    queried = true;
+    if (squared > worst) {
+      worst = squared;
+      at = i;
+    }
+  }
+  return {worst, at};
+}
+
+}  // namespace
+
 FarthestSample farthest_sample(const std::vector<Vec3>& samples, const std::vector<Vec3>& points,
                                const std::vector<Triangle>& triangles) {
   const TriangleTree tree(points, triangles);
@@ -57,12 +98,20 @@ FarthestSample farthest_sample(const std::vector<Vec3>& samples, const std::vect
     far.distance = std::numeric_limits<double>::quiet_NaN();
     return far;
   }
-  const std::vector<double> squared =
-      parallel_map<double>(samples.size(), [&](std::size_t i) { return tree.squared_distance(samples[i]); });
+  const std::vector<double> looked = parallel_map<double>(
+      (samples.size() + first_look_stride - 1) / first_look_stride,
+      [&](std::size_t k) { return tree.squared_distance(samples[k * first_look_stride]); });
+  const double known = *std::max_element(looked.begin(), looked.end());
+  const std::size_t blocks = (samples.size() + sample_block - 1) / sample_block;
+  const std::vector<std::pair<double, std::size_t>> farthest =
+      parallel_map<std::pair<double, std::size_t>>(blocks, [&](std::size_t b) {
+        return farthest_in_block(tree, samples, b * sample_block, std::min(samples.size(), (b + 1) * sample_block),
+                                 known);
+      });
   double worst = -1;
-  for (std::size_t i = 0; i < samples.size(); ++i)
-    if (squared[i] > worst) {
-      worst = squared[i];
+  for (const auto& [squared, i] : farthest)
+    if (squared > worst) {
+      worst = squared;
       far.point = samples[i];
     }
   far.distance = std::sqrt(worst);

@@ -4,6 +4,7 @@
 #include "io/read_polygon_mesh.h"
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/quality/hausdorff.h"
+#include "libquadmesh/quality/internal/triangle_tree.h"
 #include "libquadmesh/quality/quad_quality.h"
 #include "tests/support/test_meshes.h"
 
@@ -312,6 +313,39 @@ TEST_CASE("Hausdorff distance: own triangulation, shifted copy, a larger referen
                                                grid.points, triangulated(grid, false).triangles);
     CHECK(far.point == Vec3(2 * n, 2 * m, 0));
     CHECK(std::abs(far.distance - std::sqrt(double(n * n + m * m))) < 1e-12);
+  }
+}
+
+TEST_CASE("the farthest sample passes over the samples that cannot be it: the same sample and distance as every query") {
+  // a bumpy sheet's samples against a flat one: many blocks of samples, most of
+  // them near the reference, the farthest at one bump's top; and ties (a flat
+  // sheet lifted: every sample at one distance, the first one farthest)
+  const int n = 24, m = 18;
+  const PolygonMesh flat = unit_grid(n, m);
+  const TriangleSoup reference = triangulated(flat, false);
+  for (const double bump : {0.8, 0.0}) {
+    const PolygonMesh bumpy = quad_grid(n, m, [&](int i, int j) {
+      const double r2 = (i - 17.0) * (i - 17.0) + (j - 5.0) * (j - 5.0);
+      return Vec3(i, j, 0.25 + bump * std::exp(-r2 / 4) + 0.05 * std::sin(1.3 * i) * std::cos(0.7 * j) * (bump > 0));
+    });
+    const TriangleSoup sheet = triangulated(bumpy, true);
+    const std::vector<Vec3> samples = surface_samples(sheet.points, sheet.triangles);
+    REQUIRE(samples.size() > 4000);
+    const TriangleTree tree(reference.points, reference.triangles);
+    double worst = -1;
+    Vec3 at = Vec3::Zero();
+    for (const Vec3& s : samples) {
+      const double d = tree.squared_distance(s);
+      if (d > worst) {
+        worst = d;
+        at = s;
+      }
+    }
+    const FarthestSample far = farthest_sample(samples, reference.points, reference.triangles);
+    CHECK(far.distance == std::sqrt(worst));
+    CHECK(far.point == at);
+    if (bump > 0) CHECK(at.z() > 0.9);
+    else CHECK(at == samples.front());
   }
 }
 

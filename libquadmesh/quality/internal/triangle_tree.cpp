@@ -79,6 +79,14 @@ double TriangleTree::squared_distance(const Vec3& p) const {
   return impl_->tree->squared_distance(cgal(p));
 }
 
+std::pair<double, Vec3> TriangleTree::squared_distance_and_closest(const Vec3& p) const {
+  QM_ASSERT(impl_->tree && !empty());
+  // what AABB_tree::squared_distance computes, keeping the point
+  const K::Point_3 q = cgal(p);
+  const K::Point_3 closest = impl_->tree->closest_point(q);
+  return {K::Compute_squared_distance_3()(q, closest), eigen(closest)};
+}
+
 struct SegmentTree::Impl {
   std::vector<Segment3> segments;
   std::vector<int> ids;

@@ -33,6 +33,8 @@ class TriangleTree {
   /// threads (core/parallel.h: the same answers whatever their number).
   std::vector<std::pair<Vec3, int>> closest_to_each(const std::vector<Vec3>& points) const;
   double squared_distance(const Vec3& p) const;
+  /// squared_distance(p), the same number, and the closest point it is measured to.
+  std::pair<double, Vec3> squared_distance_and_closest(const Vec3& p) const;
 
  private:
   struct Impl;
