@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <set>
 #include <utility>
 
 namespace qm {
@@ -20,13 +19,16 @@ std::vector<Vec3> surface_samples(const std::vector<Vec3>& points,
   const int k = options.subdivisions;
   std::vector<Vec3> samples;
   std::vector<char> used(points.size(), 0);
-  std::set<std::pair<int, int>> edges;
+  std::vector<std::pair<int, int>> edges;  // each distinct edge once, in order
+  edges.reserve(3 * triangles.size());
   for (const Triangle& t : triangles)
     for (int c = 0; c < 3; ++c) {
       used[static_cast<std::size_t>(t[c])] = 1;
       const int a = t[c], b = t[(c + 1) % 3];
-      edges.emplace(std::min(a, b), std::max(a, b));
+      edges.emplace_back(std::min(a, b), std::max(a, b));
     }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   for (std::size_t i = 0; i < points.size(); ++i)
     if (used[i]) samples.push_back(points[i]);
   for (const auto& [a, b] : edges)
