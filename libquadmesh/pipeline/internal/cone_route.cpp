@@ -96,7 +96,12 @@ std::vector<ConePlacementOptions> squared_hole_placements(bool fillets) {
   squared.fillet_cones = fillets;
   ConePlacementOptions facing_frame = squared;
   facing_frame.squares_face_frame = true;
-  return {squared, facing_frame};
+  std::vector<ConePlacementOptions> out{squared, facing_frame};
+  for (ConePlacementOptions every_length : {squared, facing_frame}) {
+    every_length.square_hole_max_length = std::numeric_limits<double>::infinity();
+    out.push_back(every_length);
+  }
+  return out;
 }
 
 std::vector<ConePlacementOptions> fillet_placements() {

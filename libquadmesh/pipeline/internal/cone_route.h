@@ -114,7 +114,12 @@ std::vector<ConePlacementOptions> fillet_placements();
 /// (ConePlacementOptions::square_every_hole), and with fillet_cones where the part
 /// has convex fillets (`fillets`); then the same with the squares turned to the
 /// frame (ConePlacementOptions::squares_face_frame: where holes crowd, every
-/// placement squares them as the first does, so this is the one new placement).
+/// placement squares them as the first does, so this is the one new placement);
+/// then both with every hole without corners a square, however long (shorter than
+/// the longest loop): a plate whose large holes each want four valence-5 cones,
+/// and its fillets four valence-3 ones, more than the bound allows (100 x 100, six
+/// holes 10-32 quads round: 28 interior cones for 24 allowed; the best sound
+/// placement 72-76% in the band), has them all on the holes.
 std::vector<ConePlacementOptions> squared_hole_placements(bool fillets);
 
 /// Tried, greedy, when the greedy placements (and the lattices centred or finer)
