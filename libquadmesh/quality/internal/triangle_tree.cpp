@@ -74,14 +74,12 @@ std::vector<std::pair<Vec3, int>> TriangleTree::closest_to_each(const std::vecto
   return parallel_map<std::pair<Vec3, int>>(points.size(), [&](std::size_t i) { return closest(points[i]); });
 }
 
-double TriangleTree::squared_distance(const Vec3& p) const {
-  QM_ASSERT(impl_->tree && !empty());
-  return impl_->tree->squared_distance(cgal(p));
-}
+double TriangleTree::squared_distance(const Vec3& p) const { return squared_distance_and_closest(p).first; }
 
 std::pair<double, Vec3> TriangleTree::squared_distance_and_closest(const Vec3& p) const {
   QM_ASSERT(impl_->tree && !empty());
-  // what AABB_tree::squared_distance computes, keeping the point
+  // what AABB_tree::squared_distance computes, keeping the point: one computation
+  // for both, so that the farthest sample's bounds and the distances agree
   const K::Point_3 q = cgal(p);
   const K::Point_3 closest = impl_->tree->closest_point(q);
   return {K::Compute_squared_distance_3()(q, closest), eigen(closest)};
