@@ -810,15 +810,9 @@ TEST_CASE("holes side by side made squares: turned to the plate's edges, not to 
   io::ReadOptions read;
   read.quad_size = size;
   const TriangleSoup soup =
-      io::read_surface(test::write_text(test::scratch_dir("squares_facing_frame"), "plate.geo",
-                                        "SetFactory(\"OpenCASCADE\");\n"
-                                        "Rectangle(1) = {0, 0, 0, 120, 50};\n"
-                                        "Disk(2) = {52.78, 8.49, 0, 3.91}; Disk(3) = {106.45, 22.66, 0, 4.62};\n"
-                                        "Disk(4) = {53.22, 41.52, 0, 3.04}; Disk(5) = {90.68, 30.67, 0, 4.48};\n"
-                                        "Disk(6) = {56.39, 30.13, 0, 3.15}; Disk(7) = {21.40, 30.85, 0, 3.52};\n"
-                                        "Disk(8) = {79.84, 17.41, 0, 3.98};\n"
-                                        "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:8}; Delete; }\n"),
-                       read)
+      io::read_surface(
+          test::write_text(test::scratch_dir("squares_facing_frame"), "plate.geo", test::crowded_holes_plate_geo()),
+          read)
           .soup;
   const SurfaceAdjacency adjacency = surface_adjacency(soup);
   REQUIRE(euler_characteristic(adjacency) == -6);

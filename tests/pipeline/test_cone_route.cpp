@@ -19,7 +19,6 @@
 #include "tests/support/test_meshes.h"
 
 #include <doctest/doctest.h>
-#include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
@@ -59,19 +58,6 @@ QuadMeshResult mesh_cad_part(const std::string& path, TriangleSoup& input, const
 /// mesh_cad_part of a .geo `text`, written to a scratch folder `name`.
 QuadMeshResult mesh_geo_text(const std::string& name, const std::string& text, TriangleSoup& input) {
   return mesh_cad_part(test::write_text(test::scratch_dir(name), name + ".geo", text), input);
-}
-
-/// A generated plate's .geo text (scripts/plate-sweep): a `width` x `height`
-/// rectangle, its corners rounded with radius `fillet` (0: sharp), minus the round
-/// holes {x, y, radius}.
-std::string plate_geo(double width, double height, double fillet, const std::vector<std::array<double, 3>>& holes) {
-  std::string text = "SetFactory(\"OpenCASCADE\");\n";
-  text += fillet > 0 ? fmt::format("Rectangle(1) = {{0, 0, 0, {}, {}, {}}};\n", width, height, fillet)
-                     : fmt::format("Rectangle(1) = {{0, 0, 0, {}, {}}};\n", width, height);
-  for (std::size_t i = 0; i < holes.size(); ++i)
-    text += fmt::format("Disk({}) = {{{}, {}, 0, {}}};\n", i + 2, holes[i][0], holes[i][1], holes[i][2]);
-  return text + fmt::format("BooleanDifference{{ Surface{{1}}; Delete; }}{{ Surface{{2:{}}}; Delete; }}\n",
-                            holes.size() + 1);
 }
 
 /// Issue 18's acceptance on the quads `q` of a surface with `chi` and `loops`:
@@ -423,7 +409,7 @@ TEST_CASE("where no placement is acceptable, the sound one nearest the acceptanc
   const std::vector<std::array<double, 3>> holes{{22.66, 41.44, 3.51}, {138.04, 36.83, 6.86}, {99.40, 29.31, 5.88},
                                                 {28.28, 11.18, 5.46}, {113.68, 47.75, 6.91}, {86.29, 16.83, 6.33},
                                                 {78.73, 44.04, 6.91}};
-  const QuadMeshResult r = mesh_geo_text("plate_seven_holes", plate_geo(150, 60, 0, holes), input);
+  const QuadMeshResult r = mesh_geo_text("plate_seven_holes", test::plate_geo(150, 60, 0, holes), input);
   check_cone_acceptance(r, input, -6, 8, 0.9, 4);
   // a U-channel plate: its greedy placement nearest the acceptance, on a lattice
   // centred on the band, meets every criterion (the first sound one did not, and the
@@ -460,7 +446,7 @@ TEST_CASE("last, every small hole a square: a plate with 1.5-quad fillets and th
   }
   TriangleSoup input;
   const std::vector<std::array<double, 3>> holes{{148.42, 52.65, 5.03}, {31.10, 13.16, 7.63}, {144.50, 24.99, 5.69}};
-  const QuadMeshResult r = mesh_geo_text("plate_fillets_three_holes", plate_geo(200, 80, 5, holes), input);
+  const QuadMeshResult r = mesh_geo_text("plate_fillets_three_holes", test::plate_geo(200, 80, 5, holes), input);
   check_cone_acceptance(r, input, -2, 4, 0.9, 0);
   CHECK(boundary_cone_count(r) == 12);
 }
@@ -476,7 +462,7 @@ TEST_CASE("last of all, every hole a square however long: large holes and fillet
   TriangleSoup input;
   const std::vector<std::array<double, 3>> holes{{87.63, 84.16, 5.30},  {33.41, 17.69, 7.60}, {71.58, 54.14, 7.28},
                                                 {51.65, 73.71, 10.33}, {33.16, 43.25, 10.64}, {22.04, 61.96, 3.23}};
-  const QuadMeshResult r = mesh_geo_text("plate_large_holes_fillets", plate_geo(100, 100, 10, holes), input);
+  const QuadMeshResult r = mesh_geo_text("plate_large_holes_fillets", test::plate_geo(100, 100, 10, holes), input);
   CHECK(check_cone_acceptance(r, input, -5, 7, 0.9, 0).irregular_interior == 4);
   CHECK(boundary_cone_count(r) == 24);
   // a square flange with rounded corners, a bore and four bolt holes (it took the
@@ -497,10 +483,7 @@ TEST_CASE("holes crowded side by side: their squares turned to the plate's edges
   // band, 4.0 x). The squares turned to the plate's edges (tests/cones
   // test_cone_map.cpp) do not fold: no interior cone, every quad in the band
   TriangleSoup input;
-  const std::vector<std::array<double, 3>> holes{{52.78, 8.49, 3.91}, {106.45, 22.66, 4.62}, {53.22, 41.52, 3.04},
-                                                {90.68, 30.67, 4.48}, {56.39, 30.13, 3.15}, {21.40, 30.85, 3.52},
-                                                {79.84, 17.41, 3.98}};
-  const QuadMeshResult r = mesh_geo_text("plate_seven_crowded_holes", plate_geo(120, 50, 0, holes), input);
+  const QuadMeshResult r = mesh_geo_text("plate_seven_crowded_holes", test::crowded_holes_plate_geo(), input);
   CHECK(check_cone_acceptance(r, input, -6, 8, 0.95, 4).irregular_interior == 0);
   CHECK(boundary_cone_count(r) == 4 + 28);
 }

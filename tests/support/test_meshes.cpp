@@ -1,5 +1,7 @@
 #include "tests/support/test_meshes.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <unistd.h>
 
@@ -33,12 +35,20 @@ std::string write_text(const std::string& dir, const std::string& name, const st
   return path;
 }
 
+std::string plate_geo(double width, double height, double fillet, const std::vector<std::array<double, 3>>& holes) {
+  std::string text = "SetFactory(\"OpenCASCADE\");\n";
+  text += fillet > 0 ? fmt::format("Rectangle(1) = {{0, 0, 0, {}, {}, {}}};\n", width, height, fillet)
+                     : fmt::format("Rectangle(1) = {{0, 0, 0, {}, {}}};\n", width, height);
+  for (std::size_t i = 0; i < holes.size(); ++i)
+    text += fmt::format("Disk({}) = {{{}, {}, 0, {}}};\n", i + 2, holes[i][0], holes[i][1], holes[i][2]);
+  return text + fmt::format("BooleanDifference{{ Surface{{1}}; Delete; }}{{ Surface{{2:{}}}; Delete; }}\n",
+                            holes.size() + 1);
+}
+
 std::string five_hole_plate_geo() {
-  return "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 150, 50};\n"
-         "Disk(2) = {32.90, 18.35, 0, 4.56};\nDisk(3) = {62.03, 25.02, 0, 3.24};\n"
-         "Disk(4) = {11.41, 22.08, 0, 4.47};\nDisk(5) = {140.19, 14.53, 0, 4.62};\n"
-         "Disk(6) = {43.14, 28.38, 0, 3.18};\n"
-         "BooleanDifference{ Surface{1}; Delete; }{ Surface{2:6}; Delete; }\n";
+  return plate_geo(150, 50, 0,
+                   {{32.90, 18.35, 4.56}, {62.03, 25.02, 3.24}, {11.41, 22.08, 4.47}, {140.19, 14.53, 4.62},
+                    {43.14, 28.38, 3.18}});
 }
 
 std::string long_arm_bracket_geo() {
@@ -51,11 +61,15 @@ std::string long_arm_bracket_geo() {
 }
 
 std::string edge_hole_plate_geo() {
-  return "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 150, 50, 10};\n"
-         "Disk(2) = {122.11, 20.79, 0, 4.67};\nDisk(3) = {26.16, 42.26, 0, 3.11};\n"
-         "Disk(4) = {118.24, 39.33, 0, 5.60};\nDisk(5) = {8.58, 26.46, 0, 4.43};\n"
-         "Disk(6) = {40.01, 13.69, 0, 4.42};\nDisk(7) = {91.62, 24.62, 0, 4.57};\n"
-         "BooleanDifference{ Surface{1}; Delete; }{ Surface{2, 3, 4, 5, 6, 7}; Delete; }\n";
+  return plate_geo(150, 50, 10,
+                   {{122.11, 20.79, 4.67}, {26.16, 42.26, 3.11}, {118.24, 39.33, 5.60}, {8.58, 26.46, 4.43},
+                    {40.01, 13.69, 4.42}, {91.62, 24.62, 4.57}});
+}
+
+std::string crowded_holes_plate_geo() {
+  return plate_geo(120, 50, 0,
+                   {{52.78, 8.49, 3.91}, {106.45, 22.66, 4.62}, {53.22, 41.52, 3.04}, {90.68, 30.67, 4.48},
+                    {56.39, 30.13, 3.15}, {21.40, 30.85, 3.52}, {79.84, 17.41, 3.98}});
 }
 
 TriangleSoup annulus(double r0, double r1, int rings, int sectors) {

@@ -4,6 +4,7 @@
 
 #include "libquadmesh/core/triangle_soup.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,10 @@ std::string example(const std::string& name);
 std::string scratch_dir(const std::string& test_name);
 /// Writes `text` to dir/name (a .geo written by a test); returns the path.
 std::string write_text(const std::string& dir, const std::string& name, const std::string& text);
+/// A generated plate's .geo text (OpenCASCADE, as scripts/plate-sweep writes
+/// them): a `width` x `height` rectangle, its corners rounded with radius `fillet`
+/// (0: sharp), minus the round holes {x, y, radius}.
+std::string plate_geo(double width, double height, double fillet, const std::vector<std::array<double, 3>>& holes);
 /// A 150 x 50 CAD plate with five round holes, two of them 6.6 apart (OpenCASCADE
 /// .geo text): its first rounding at 1.5% leaves folds and dropped cells.
 std::string five_hole_plate_geo();
@@ -25,6 +30,9 @@ std::string five_hole_plate_geo();
 /// were merged and the quads left a gap beside the hole; at 1.2% the quads'
 /// boundary still leaves the hole's.
 std::string edge_hole_plate_geo();
+/// A 120 x 50 CAD plate with seven holes side by side (p13 of scripts/plate-sweep):
+/// squares turned to each other's holes fold the map between them.
+std::string crowded_holes_plate_geo();
 /// A 200 x 40 CAD L-bracket with an arm 100 long and 20 wide and three holes
 /// (OpenCASCADE .geo text): every symmetric form decays along the arm, and the
 /// quads cannot conform (README Limits).
