@@ -8,7 +8,8 @@
 // against the Abel run (issue 18: the cones within about 2x of it). With --repeat
 // N each job runs N times, the two alternating, and the shortest run of each is
 // the one printed: on a shared machine whose load comes and goes, the load moves
-// both alike.
+// both alike. A CAD input (.geo, .step, ...) is triangulated for the quad size
+// asked for, as `quadmesh mesh` triangulates it.
 #include "io/read_surface.h"
 #include "libquadmesh/pipeline/mesh_quads.h"
 #include "libquadmesh/topology/applicability.h"
@@ -36,7 +37,10 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 100));
   CLI11_PARSE(app, argc, argv);
   try {
-    const qm::AnalyzedSurface surface = qm::analyze_topology(qm::io::read_surface(file).soup);
+    // a CAD input triangulated for this quad size, as `quadmesh mesh --size` does
+    qm::io::ReadOptions read;
+    read.quad_size_relative = percent / 100.0;
+    const qm::AnalyzedSurface surface = qm::analyze_topology(qm::io::read_surface(file, read).soup);
     qm::require_supported(surface);
     qm::QuadMeshOptions options;
     options.size_relative = percent / 100.0;
