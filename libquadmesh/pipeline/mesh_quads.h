@@ -10,6 +10,7 @@
 #include "libquadmesh/extract/quad_fitting.h"
 #include "libquadmesh/extract/quad_angle_smoothing.h"
 #include "libquadmesh/extract/quad_smoothing.h"
+#include "libquadmesh/extract/size_refinement.h"
 #include "libquadmesh/forms/symmetric_forms.h"
 #include "libquadmesh/param/branch_points.h"
 #include "libquadmesh/param/map_zeros.h"
@@ -124,6 +125,7 @@ struct QuadMeshResult {
   double base_density = 1.0;     ///< the base lattice's quad count as a fraction of the target (< 1: coarsened)
   double max_deviation = 0.0;    ///< the tolerance used (0: refinement off)
   DeviationRefinementReport refinement;
+  SizeRefinementReport size_refinement;  ///< the cone route: chords split through quads above the size band
   QuadSmoothingReport smoothing;  ///< the worst quads' interior points moved on S
   QuadAngleSmoothingReport angle_smoothing;  ///< then every regular interior point, towards right angles
   QuadFittingReport fitting;      ///< corners moved onto S where the quads cut across it (max_deviation > 0)

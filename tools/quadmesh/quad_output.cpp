@@ -306,6 +306,11 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
                      {"quads_added", rf.quads_added},
                      {"rounds", rf.rounds},
                      {"rounds_undone", rf.rounds_undone}};
+  const SizeRefinementReport& sr = result.size_refinement;
+  j["size_refinement"] = {{"chords_split", sr.chords_split},
+                          {"quads_added", sr.quads_added},
+                          {"max_ratio_before", sr.max_ratio_before},
+                          {"max_ratio_after", sr.max_ratio_after}};
   Json timings = Json::object();  // a stage run more than once (another form, a coarser base) adds up
   for (const auto& [stage, t] : result.timings) timings[stage] = timings.value(stage, 0.0) + t;
   timings["total"] = seconds;
@@ -364,6 +369,11 @@ void print_summary(const MeshSummary& s) {
                rf["chords_split"].get<std::size_t>(), rf["quads_added"].get<std::size_t>(),
                100 * rf["base_density"].get<double>(), rf["deviation_before"].get<double>(),
                rf["deviation_after"].get<double>(), rf["max_deviation"].get<double>());
+  if (const Json& sr = s.report["size_refinement"]; sr["chords_split"].get<std::size_t>() > 0)
+    fmt::print("size refinement     {} chords split through the quads above {:g} x the size (+{} quads), largest "
+               "{:.2f} -> {:.2f} x\n",
+               sr["chords_split"].get<std::size_t>(), size_ratio_limit, sr["quads_added"].get<std::size_t>(),
+               sr["max_ratio_before"].get<double>(), sr["max_ratio_after"].get<double>());
   if (const Json& ft = s.report["fitting"]; ft["moved_points"].get<std::size_t>() > 0)
     fmt::print("fitting             {} corners moved onto S, deviation {:.3g} -> {:.3g}\n",
                ft["moved_points"].get<std::size_t>(), ft["deviation_before"].get<double>(),

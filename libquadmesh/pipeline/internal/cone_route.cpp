@@ -9,6 +9,7 @@
 #include "libquadmesh/param/internal/surface_adjacency.h"
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/core/parallel.h"
+#include "libquadmesh/extract/size_refinement.h"
 #include "libquadmesh/pipeline/internal/attempt.h"
 #include "libquadmesh/pipeline/internal/deviation_budget.h"
 #include "libquadmesh/pipeline/internal/quad_improvement.h"
@@ -647,6 +648,33 @@ std::optional<ConeCandidate> centred_candidate(const FormSetup& setup, const Qua
   return centred;
 }
 
+/// `cones` (some of its quads above max_size_ratio x the size) with the chords
+/// through those quads split (size_refinement.h), when its quads are sound and stay
+/// sound and come within the size band (size_band_goal of them in it, none above
+/// max_size_ratio) with no more corners in another quad count.
+std::optional<ConeCandidate> size_refined(const ConeCandidate& cones, const QuadMeshOptions& options,
+                                          SurfaceTopology input, Stages& stages) {
+  const QuadMeshResult& kept = cones.candidate.result;
+  if (!(kept.size_requested > 0) || !sound(cones.candidate.quality, input, options.acceptance)) return std::nullopt;
+  stages.next("size_refinement", fmt::format("splitting the chords through the quads above {:g} x the size",
+                                             max_size_ratio));
+  QuadMeshResult r = kept;
+  SizeRefinementOptions refinement;
+  refinement.size = r.size_requested;
+  refinement.max_ratio = max_size_ratio;
+  r.size_refinement = refine_to_size(r.surface, surface_adjacency(r.surface), r.quads, r.boundary_loop_of_point,
+                                     refinement);
+  if (r.size_refinement.chords_split == 0) return std::nullopt;
+  ConeCandidate out;
+  out.candidate.quality = assess_candidate(r);
+  out.band = size_band(r);
+  if (!sound(out.candidate.quality, input, options.acceptance) || !in_size_band(out.band) ||
+      corner_mismatches(r) > corner_mismatches(kept))
+    return std::nullopt;
+  out.candidate.result = std::move(r);
+  return out;
+}
+
 /// The greedy (or the asked) placements' candidate on `setup` (turned_boundary_setup):
 /// the placements in turn, until one gives sound quads (cramped cones fold the
 /// map), then a lattice centred or finer. Throws qm::Error with the first
@@ -722,8 +750,11 @@ std::optional<ConeCandidate> field_candidate(const FormSetup& setup, const QuadM
 
 /// The cone route's candidate: placements_candidate's (the greedy placements,
 /// then a lattice centred or finer); where that is not acceptable, greedy, the
-/// cross field's singularities (cross_field_placement), kept when they are.
-/// Throws qm::Error with the first placement's failure when neither gives quads.
+/// cross field's singularities (cross_field_placement), kept when they are; then
+/// placements_candidate's with the chords through its quads above the band split
+/// (size_refined), kept when acceptable: a cone layout that meets the band by
+/// itself is preferred to a strip halved. Throws qm::Error with the first
+/// placement's failure when neither gives quads.
 ConeCandidate cone_candidate(const FormSetup& form_setup, const QuadMeshOptions& options, SurfaceTopology input,
                              Stages& stages) {
   const FormSetup setup = turned_boundary_setup(form_setup);
@@ -740,6 +771,10 @@ ConeCandidate cone_candidate(const FormSetup& form_setup, const QuadMeshOptions&
     if (field && acceptable(*field, options, setup.diagonal, input, stages)) return std::move(*field);
   }
   if (!placed) throw Error(ErrorCode::unsupported, failure);
+  // last, the placements' quads with the chords through those above the band split
+  if (placed->band.max_ratio > max_size_ratio)
+    if (std::optional<ConeCandidate> refined = size_refined(*placed, options, input, stages))
+      if (acceptable(*refined, options, setup.diagonal, input, stages)) return std::move(*refined);
   return std::move(*placed);
 }
 
