@@ -220,8 +220,13 @@ QuadAngleSmoothingReport smooth_quad_angles(const TriangleSoup& surface, Lattice
   for (std::size_t v = 0; v < movable.size(); ++v)
     movable[v] = star.regular_interior(v, boundary_loop_of_point) && (fixed.empty() || !fixed[v]);
   PointMoves moves(quads);
-  for (int round = 0; round < options.rounds; ++round)
-    if (angle_round(surface, tree, star, movable, moves, options) == 0) break;
+  bool moving = true;
+  for (int round = 0; moving && round < options.rounds; ++round)
+    moving = angle_round(surface, tree, star, movable, moves, options) > 0;
+  for (int round = 0; moving && options.target_mean_deg > 0 && round < options.extra_rounds &&
+                      mean_angle_deviation(quads) > options.target_mean_deg;
+       ++round)
+    moving = angle_round(surface, tree, star, movable, moves, options) > 0;
   if (moves.count() == 0) return report;
   // what the moved quads must not come out worse in, measured on the quads as they were
   Before before;

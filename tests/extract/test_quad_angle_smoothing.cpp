@@ -127,3 +127,24 @@ TEST_CASE("angle smoothing lets no quad's mean edge cross max_mean_edge") {
   for (std::size_t q = 0; q < before.size(); ++q)
     if (before[q] <= options.max_mean_edge) CHECK(after[q] <= options.max_mean_edge);
 }
+
+TEST_CASE("angle smoothing sweeps on past `rounds` while the mean is above target_mean_deg, and only then") {
+  const TriangleSoup surface = test::grid(n);
+  const std::vector<int> loops = test::unit_square_boundary(jittered_grid());
+  QuadAngleSmoothingOptions options;
+  options.rounds = 1;
+  options.min_corner_deviation_deg = 0;
+  LatticeQuads one = jittered_grid();
+  const double after_one = smooth_quad_angles(surface, one, loops, {}, options).angle_dev_after;
+  // a target below what one sweep leaves: more sweeps, down to the target or below
+  LatticeQuads more = jittered_grid();
+  options.target_mean_deg = 0.5 * after_one;
+  options.extra_rounds = 40;
+  const double after_more = smooth_quad_angles(surface, more, loops, {}, options).angle_dev_after;
+  CHECK(after_more <= options.target_mean_deg);
+  // a target above it: the same sweep as without one, point for point
+  LatticeQuads same = jittered_grid();
+  options.target_mean_deg = 2 * after_one;
+  smooth_quad_angles(surface, same, loops, {}, options);
+  CHECK(same.points == one.points);
+}

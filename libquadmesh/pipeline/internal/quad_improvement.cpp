@@ -63,6 +63,8 @@ void improve_quads(QuadMeshResult& best, const QuadMeshOptions& options, Stages&
     // the cones' quads kept within the largest size the acceptance allows (the
     // Abel quads, `abel` unchanged, are far larger where they are large)
     if (cones) angles.max_mean_edge = size_ratio_limit * best.size_requested;
+    // more sweeps where four leave the quads off the acceptance's mean angle
+    angles.target_mean_deg = options.acceptance.max_mean_angle_deviation_deg;
     best.angle_smoothing = smooth_quad_angles(best.surface, best.quads, best.boundary_loop_of_point, fitted, angles);
   }
 }
