@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 namespace qm {
 
@@ -113,13 +114,12 @@ DeviationRefinementReport refine_to_deviation(const TriangleSoup& surface,
   std::vector<double> dev = quad_deviation(index, samples, quads);
   report.deviation_before = max_of(dev);
   const std::size_t start = quads.quads.size();
-  // a new point is placed on S by closest point; on a thin or sharply curved part
-  // that point can fall where the split quads turn over or get thin: a round that
-  // turns a quad over, or takes the smallest scaled Jacobian below both its value
-  // before the refinement and the usual 0.3 floor, is undone
-  // (named variables, not a structured binding: a lambda below updates `inverted`)
+  // a round that turns a quad over, or takes the smallest scaled Jacobian below
+  // both its value before the refinement and the usual 0.3 floor, is undone
+  // (split_chord_round_or_undo; named variables, not a structured binding: a
+  // lambda below updates `inverted`)
   const auto at_start = inverted_quad_count(quads);
-  auto inverted = at_start.first;
+  std::size_t inverted = at_start.first;
   const double jacobian_floor = std::min(at_start.second, options.min_scaled_jacobian);
   // chords whose split was undone, as (quad, direction) of the current quads: a
   // round that fails is tried again with the chords of one quad at a time (the
@@ -127,22 +127,15 @@ DeviationRefinementReport refine_to_deviation(const TriangleSoup& surface,
   // quads are numbered anew then); at most single_chord_tries such tries per round
   std::vector<std::pair<int, int>> forbidden, crossings;
   auto attempt = [&](double threshold, std::size_t max_quads, std::size_t max_chosen) {
-    const LatticeQuads before = quads;
-    const std::vector<int> loops_before = boundary_loop_of_point;
-    const std::vector<double> dev_before = dev;
-    const std::size_t chosen = split_chord_round(placement, measure, quads, boundary_loop_of_point, dev, threshold,
-                                                 max_quads, forbidden, max_chosen, crossings);
-    if (chosen == 0) return 0;
-    const auto [now, jacobian] = inverted_quad_count(quads);
-    if (now > inverted || jacobian < jacobian_floor) {
-      quads = before;
-      boundary_loop_of_point = loops_before;
-      dev = dev_before;
+    const std::optional<std::size_t> chosen =
+        split_chord_round_or_undo(placement, measure, quads, boundary_loop_of_point, dev, threshold, max_quads,
+                                  forbidden, max_chosen, crossings, inverted, jacobian_floor);
+    if (!chosen) {
       ++report.rounds_undone;
       return -1;
     }
-    inverted = now;
-    report.chords_split += chosen;
+    if (*chosen == 0) return 0;
+    report.chords_split += *chosen;
     ++report.rounds;
     forbidden.clear();
     return 1;

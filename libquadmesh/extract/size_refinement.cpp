@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 
 namespace qm {
 
@@ -25,27 +26,21 @@ SizeRefinementReport refine_to_size(const TriangleSoup& surface, const SurfaceAd
   const std::size_t start = quads.quads.size();
   const TriangleTree index(surface.points, surface.triangles);
   const ChordPointPlacement placement(surface, adjacency, index);
-  const auto [inverted, jacobian] = inverted_quad_count(quads);
-  const double jacobian_floor = std::min(jacobian, options.min_scaled_jacobian);
+  const auto at_start = inverted_quad_count(quads);
+  std::size_t inverted = at_start.first;
+  const double jacobian_floor = std::min(at_start.second, options.min_scaled_jacobian);
   std::vector<std::pair<int, int>> crossings;
   for (int round = 0; round < options.max_rounds && largest(values) > options.max_ratio; ++round) {
-    const LatticeQuads before = quads;
-    const std::vector<int> loops_before = boundary_loop_of_point;
-    const std::vector<double> values_before = values;
-    const std::size_t chosen =
-        split_chord_round(placement, ratios, quads, boundary_loop_of_point, values, options.max_ratio,
-                          std::numeric_limits<std::size_t>::max(), {}, std::numeric_limits<std::size_t>::max(),
-                          crossings);
-    if (chosen == 0) break;
-    const auto [now, now_jacobian] = inverted_quad_count(quads);
-    if (now > inverted || now_jacobian < jacobian_floor) {
-      quads = before;
-      boundary_loop_of_point = loops_before;
-      values = values_before;
+    const std::optional<std::size_t> chosen = split_chord_round_or_undo(
+        placement, ratios, quads, boundary_loop_of_point, values, options.max_ratio,
+        std::numeric_limits<std::size_t>::max(), {}, std::numeric_limits<std::size_t>::max(), crossings, inverted,
+        jacobian_floor);
+    if (!chosen) {
       ++report.rounds_undone;
       break;
     }
-    report.chords_split += chosen;
+    if (*chosen == 0) break;
+    report.chords_split += *chosen;
     ++report.rounds;
   }
   report.max_ratio_after = largest(values);

@@ -51,14 +51,19 @@ std::pair<Vec3, SurfaceLocation> ChordPointPlacement::on_boundary(const Vec3& gu
 
 namespace {
 
+/// A quad whose shorter pair of opposite sides is longer than this fraction of
+/// the other pair counts as near-square: both its chords are split.
+constexpr double near_square_ratio = 0.7;
+
 double length(const LatticeQuads& q, const Quad& c, int i) {
   return (q.points[static_cast<std::size_t>(c[static_cast<std::size_t>(i)])] -
           q.points[static_cast<std::size_t>(c[static_cast<std::size_t>((i + 1) % 4)])])
       .norm();
 }
 
-}  // namespace
-
+/// Splits the chords with split[c] != 0 (quad_chords.h split_chords) and places
+/// the new points (edge midpoints, quad centres) on S, on its boundary for an edge
+/// on the quads' boundary whose ends are on it; extends `boundary_loop_of_point`.
 void split_and_place(const ChordPointPlacement& placement, LatticeQuads& quads, std::vector<int>& boundary_loop_of_point,
                      const QuadChords& chords, const std::vector<char>& split) {
   const int n = static_cast<int>(quads.points.size());
@@ -85,6 +90,8 @@ void split_and_place(const ChordPointPlacement& placement, LatticeQuads& quads, 
   }
   quads.quads = std::move(out.quads);
 }
+
+}  // namespace
 
 std::size_t split_chord_round(const ChordPointPlacement& placement, const QuadMeasure& measure, LatticeQuads& quads,
                               std::vector<int>& boundary_loop_of_point, std::vector<double>& values,
@@ -131,6 +138,31 @@ std::size_t split_chord_round(const ChordPointPlacement& placement, const QuadMe
   if (chosen == 0) return 0;
   split_and_place(placement, quads, boundary_loop_of_point, chords, split);
   values = measure(quads);
+  return chosen;
+}
+
+std::optional<std::size_t> split_chord_round_or_undo(const ChordPointPlacement& placement, const QuadMeasure& measure,
+                                                     LatticeQuads& quads, std::vector<int>& boundary_loop_of_point,
+                                                     std::vector<double>& values, double threshold,
+                                                     std::size_t max_quads,
+                                                     const std::vector<std::pair<int, int>>& forbidden,
+                                                     std::size_t max_chosen,
+                                                     std::vector<std::pair<int, int>>& chosen_crossings,
+                                                     std::size_t& inverted, double jacobian_floor) {
+  const LatticeQuads before = quads;
+  const std::vector<int> loops_before = boundary_loop_of_point;
+  const std::vector<double> values_before = values;
+  const std::size_t chosen = split_chord_round(placement, measure, quads, boundary_loop_of_point, values, threshold,
+                                               max_quads, forbidden, max_chosen, chosen_crossings);
+  if (chosen == 0) return 0;
+  const auto [now, jacobian] = inverted_quad_count(quads);
+  if (now > inverted || jacobian < jacobian_floor) {
+    quads = before;
+    boundary_loop_of_point = loops_before;
+    values = values_before;
+    return std::nullopt;
+  }
+  inverted = now;
   return chosen;
 }
 

@@ -7,12 +7,12 @@
 #include "libquadmesh/core/triangle_soup.h"
 #include "libquadmesh/extract/internal/closest_location.h"
 #include "libquadmesh/extract/lattice_quads.h"
-#include "libquadmesh/extract/quad_chords.h"
 #include "libquadmesh/param/internal/surface_adjacency.h"
 #include "libquadmesh/quality/internal/triangle_tree.h"
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -35,18 +35,8 @@ class ChordPointPlacement {
   SegmentTree boundary_;
 };
 
-/// Splits the chords with split[c] != 0 (quad_chords.h split_chords) and places
-/// the new points (edge midpoints, quad centres) on S, on its boundary for an edge
-/// on the quads' boundary whose ends are on it; extends `boundary_loop_of_point`.
-void split_and_place(const ChordPointPlacement& placement, LatticeQuads& quads, std::vector<int>& boundary_loop_of_point,
-                     const QuadChords& chords, const std::vector<char>& split);
-
 /// Per quad, the value a refinement brings down (its deviation from S, its size).
 using QuadMeasure = std::function<std::vector<double>(const LatticeQuads&)>;
-
-/// A quad whose shorter pair of opposite sides is longer than this fraction of
-/// the other pair counts as near-square: both its chords are split.
-constexpr double near_square_ratio = 0.7;
 
 /// One round: splits the chords through the quads whose `values` exceed
 /// `threshold`, largest first, as long as the quad count stays within `max_quads`,
@@ -60,6 +50,21 @@ std::size_t split_chord_round(const ChordPointPlacement& placement, const QuadMe
                               double threshold, std::size_t max_quads,
                               const std::vector<std::pair<int, int>>& forbidden, std::size_t max_chosen,
                               std::vector<std::pair<int, int>>& chosen_crossings);
+
+/// split_chord_round, undone (quads, boundary_loop_of_point and values put back)
+/// when it turns more quads over than `inverted` or takes the smallest scaled
+/// Jacobian below `jacobian_floor`: a new point placed on S by closest point can
+/// fall where the split quads turn over or get thin. Returns the chords split (0:
+/// none was chosen), nothing when the round was undone; after a kept round
+/// `inverted` is its count.
+std::optional<std::size_t> split_chord_round_or_undo(const ChordPointPlacement& placement, const QuadMeasure& measure,
+                                                     LatticeQuads& quads, std::vector<int>& boundary_loop_of_point,
+                                                     std::vector<double>& values, double threshold,
+                                                     std::size_t max_quads,
+                                                     const std::vector<std::pair<int, int>>& forbidden,
+                                                     std::size_t max_chosen,
+                                                     std::vector<std::pair<int, int>>& chosen_crossings,
+                                                     std::size_t& inverted, double jacobian_floor);
 
 /// The quads with a corner whose scaled Jacobian (the quality module's,
 /// sound_scaled_jacobians) is <= 0, and the smallest scaled Jacobian (1 without quads).
