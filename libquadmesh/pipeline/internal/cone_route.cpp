@@ -114,6 +114,7 @@ std::vector<ConePlacementOptions> fillet_placements() {
 ConePlacementOptions cross_field_placement() {
   ConePlacementOptions field;
   field.interior = InteriorCones::cross_field;
+  field.place_again_where_folded = true;
   return field;
 }
 
@@ -225,8 +226,8 @@ constexpr int max_placements_elsewhere = 2;
 
 /// One placement's attempt reported on `stages`; with `placed`, cones placed before
 /// are not mapped again (the caller's check refuses them). Where the map folds and
-/// winds round some interior cones a turn short, a capped placement
-/// (ConePlacementOptions::place_again_where_folded) is made again with
+/// winds round some interior cones a turn short, a capped placement or the cross
+/// field's (ConePlacementOptions::place_again_where_folded) is made again with
 /// those cones' places avoided (ConePlacementOptions::avoided_points), and the
 /// map with the fewest folds kept (bunny-open's capped cones 1.5
 /// quads from the boundary: 7 folded triangles round one valence-5 cone; placed

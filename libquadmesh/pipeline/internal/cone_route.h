@@ -130,7 +130,11 @@ std::vector<ConePlacementOptions> squared_hole_placements(bool fillets);
 /// band, the Abel quads 89%; the field's 24 cones 100%), a plate with two slots
 /// (the largest quad 3.0 x; the field's 1.4 x) and a spanner (every greedy
 /// placement's metric 10^5 x the size at the jaw; the field's 100%). On scans the
-/// field's singularities are many and fold the maps, so it comes last.
+/// field's singularities are many and fold the maps, so it comes last. Where its
+/// map folds round cones it winds a turn short, it is placed again away from them
+/// (place_again_where_folded), as the capped placements are: a wheel with a bore
+/// and three holes of radius 26 on a pitch circle of 44 (radius 80), greedy at
+/// most 81% in the band, the field's first two maps folded, the third 93%.
 ConePlacementOptions cross_field_placement();
 
 /// A placement tried after cone_placements() (greedy; fallback_placements) when
