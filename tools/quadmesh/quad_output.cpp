@@ -295,8 +295,9 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
   j["surface_triangles"] = result.surface.triangles.size();
   j["long_edges"] = {{"split", result.long_edges_split},
                      {"kept", result.long_edges_split == 0 ? "none split" : result.long_edges_kept ? "split" : "input"}};
-  // the tolerance is the fitting's too; chords are split on the Abel route only
-  j["refinement"] = {{"enabled", result.max_deviation > 0 && result.singularities != "cones"},
+  // the tolerance is the fitting's too; chords are split on the Abel route, and on
+  // the cone route only where its quads were farther from S than the acceptance
+  j["refinement"] = {{"enabled", result.max_deviation > 0 && (result.singularities != "cones" || rf.chords_split > 0)},
                      {"max_deviation", result.max_deviation},
                      {"base_density", result.base_density},
                      {"deviation_before", rf.deviation_before},

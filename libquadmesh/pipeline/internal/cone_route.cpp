@@ -9,6 +9,7 @@
 #include "libquadmesh/param/internal/surface_adjacency.h"
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/core/parallel.h"
+#include "libquadmesh/extract/deviation_refinement.h"
 #include "libquadmesh/extract/size_refinement.h"
 #include "libquadmesh/pipeline/internal/attempt.h"
 #include "libquadmesh/pipeline/internal/deviation_budget.h"
@@ -676,6 +677,49 @@ std::optional<ConeCandidate> size_refined(const ConeCandidate& cones, const Quad
   return out;
 }
 
+/// The quads a deviation refinement of cone quads may reach, as a multiple of their
+/// count (the Abel quads' budget is 1.1 x the target count: deviation_budget.h; a
+/// chord of a cone mesh runs farther, across the part).
+constexpr double max_deviation_refinement_growth = 1.25;
+/// The deviation the refinement aims at, as a fraction of the acceptance's
+/// distance: below it, since the smoothing and the fitting move corners after.
+constexpr double deviation_target_of_acceptance = 0.8;
+
+/// `cones` (sound, in the size band, every corner right, but farther from S than
+/// the acceptance allows, as judged) with the chords split where its quads deviate
+/// (deviation_refinement.h: within max_deviation_refinement_growth x its quads, to
+/// deviation_target_of_acceptance of the acceptance's distance or the deviation
+/// tolerance, the smaller), when that is sound, in the band, every corner right and
+/// within the distance as judged.
+std::optional<ConeCandidate> deviation_refined(const ConeCandidate& cones, const QuadMeshOptions& options,
+                                               double diagonal, SurfaceTopology input, Stages& stages) {
+  const QuadMeshResult& kept = cones.candidate.result;
+  if (!(cones.distance > options.acceptance.max_hausdorff_relative) || options.max_deviation < 0 ||
+      !sound(cones.candidate.quality, input, options.acceptance) || !in_size_band(cones.band) ||
+      corner_mismatches(kept) > 0)
+    return std::nullopt;
+  QuadMeshResult r = kept;
+  DeviationRefinementOptions refinement;
+  refinement.tolerance = std::min(deviation_tolerance(options, diagonal, r),
+                                  deviation_target_of_acceptance * options.acceptance.max_hausdorff_relative * diagonal);
+  refinement.max_quads = static_cast<std::size_t>(max_deviation_refinement_growth *
+                                                  static_cast<double>(r.quads.quads.size()));
+  refinement.min_scaled_jacobian = options.acceptance.min_scaled_jacobian;
+  stages.next("refinement", fmt::format("{:.2g}% of the diagonal from the surface: splitting the chords where the "
+                                        "cones' quads are farther than {:.4g}",
+                                        100 * cones.distance, refinement.tolerance));
+  r.max_deviation = refinement.tolerance;
+  r.refinement = refine_to_deviation(r.surface, surface_adjacency(r.surface), r.quads, r.boundary_loop_of_point,
+                                     refinement);
+  if (r.refinement.chords_split == 0) return std::nullopt;
+  r.judged_deviation = -1;  // measured again as written
+  ConeCandidate out;
+  out.candidate.quality = assess_candidate(r);
+  out.band = size_band(r);
+  out.candidate.result = std::move(r);
+  return out;
+}
+
 /// The greedy (or the asked) placements' candidate on `setup` (turned_boundary_setup):
 /// the placements in turn, until one gives sound quads (cramped cones fold the
 /// map), then a lattice centred or finer. Throws qm::Error with the first
@@ -772,10 +816,13 @@ ConeCandidate cone_candidate(const FormSetup& form_setup, const QuadMeshOptions&
     if (field && acceptable(*field, options, setup.diagonal, input, stages)) return std::move(*field);
   }
   if (!placed) throw Error(ErrorCode::unsupported, failure);
-  // last, the placements' quads with the chords through those above the band split
+  // last, the placements' quads with the chords through those above the band split,
+  // or where they are farther from S than the acceptance allows
   if (placed->band.max_ratio > max_size_ratio)
     if (std::optional<ConeCandidate> refined = size_refined(*placed, options, input, stages))
       if (acceptable(*refined, options, setup.diagonal, input, stages)) return std::move(*refined);
+  if (std::optional<ConeCandidate> refined = deviation_refined(*placed, options, setup.diagonal, input, stages))
+    if (acceptable(*refined, options, setup.diagonal, input, stages)) return std::move(*refined);
   return std::move(*placed);
 }
 
