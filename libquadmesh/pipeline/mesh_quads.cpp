@@ -96,6 +96,7 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
       return mesh_attempt(setup, options, coarser, stages);
     });
   keep_nearer_cones(best, cones, options, input, stages);
+  split_abel_quads_above_band(best, options, input, stages);
   QuadMeshResult result = std::move(best.result);
   improve_quads(result, options, stages);
   stages.close();

@@ -331,7 +331,10 @@ std::string abel_shortfall(const QuadQuality& q, double band_share) {
 
 void warn_about_result(const MeshSummary& summary, const QuadMeshResult& result, double diagonal) {
   warn_if_cells_dropped(result);
-  if (!result.cone_route_failure.empty())
+  // (Abel quads whose chords through the quads above the band were split are in
+  // the band then: split_abel_quads_above_band keeps only that)
+  const bool split_into_band = result.singularities == "abel" && result.size_refinement.chords_split > 0;
+  if (!result.cone_route_failure.empty() && !(split_into_band && corners_wrong(summary.quality) == 0))
     fmt::print(stderr, "quadmesh: warning: the Abel quads {}; quarter-turn cones did not help: {}; the Abel result "
                        "is kept\n",
                abel_shortfall(summary.quality, result.abel_size_band_share), result.cone_route_failure);

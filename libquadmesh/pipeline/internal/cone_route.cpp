@@ -895,6 +895,21 @@ ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOpt
   return outcome;
 }
 
+void split_abel_quads_above_band(Candidate& best, const QuadMeshOptions& options, SurfaceTopology input,
+                                 Stages& stages) {
+  if (options.singularities != Singularities::automatic || !best.quality.has_quads ||
+      best.result.singularities != "abel")
+    return;
+  const SizeBand band = size_band(best.result);
+  if (!(band.share_in_band >= size_band_goal) || !(band.max_ratio > max_size_ratio)) return;
+  ConeCandidate kept;
+  kept.candidate.result = best.result;
+  kept.candidate.quality = assess_candidate(best.result);  // (refined where it deviates since measured)
+  kept.band = band;
+  if (std::optional<ConeCandidate> refined = size_refined(kept, options, input, stages))
+    best = std::move(refined->candidate);
+}
+
 void keep_nearer_cones(Candidate& best, ConeRouteOutcome& outcome, const QuadMeshOptions& options,
                        SurfaceTopology input, Stages& stages) {
   if (!outcome.too_far) return;

@@ -250,4 +250,13 @@ ConeRouteOutcome try_cones_if_off_band(const FormSetup& setup, const QuadMeshOpt
 void keep_nearer_cones(Candidate& best, ConeRouteOutcome& outcome, const QuadMeshOptions& options,
                        SurfaceTopology input, Stages& stages);
 
+/// Singularities::automatic, where the Abel quads are kept (`best`, sound) with
+/// size_band_goal of them in the size band but some above size_ratio_limit x the
+/// size: the chords through those are split (extract/size_refinement.h), kept when
+/// the quads stay sound and come within the band (size_band_goal of them in it,
+/// none above size_ratio_limit) with no more corners in another quad count. A
+/// wheel with seven lightening holes at 1.2%: 97% in the band, one quad 3.6 x.
+void split_abel_quads_above_band(Candidate& best, const QuadMeshOptions& options, SurfaceTopology input,
+                                 Stages& stages);
+
 }  // namespace qm
