@@ -708,11 +708,10 @@ std::optional<ConeCandidate> deviation_refined(const ConeCandidate& cones, const
   stages.next("refinement", fmt::format("{:.2g}% of the diagonal from the surface: splitting the chords where the "
                                         "cones' quads are farther than {:.4g}",
                                         100 * cones.distance, refinement.tolerance));
-  r.max_deviation = refinement.tolerance;
   r.refinement = refine_to_deviation(r.surface, surface_adjacency(r.surface), r.quads, r.boundary_loop_of_point,
                                      refinement);
   if (r.refinement.chords_split == 0) return std::nullopt;
-  r.judged_deviation = -1;  // measured again as written
+  r.judged_deviation = -1;  // measured again as written (and max_deviation set: judge_as_written)
   ConeCandidate out;
   out.candidate.quality = assess_candidate(r);
   out.band = size_band(r);
