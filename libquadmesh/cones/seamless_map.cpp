@@ -1,6 +1,7 @@
 #include "libquadmesh/cones/seamless_map.h"
 
 #include "libquadmesh/cones/cone_winding.h"
+#include "libquadmesh/cones/internal/boundary_ligaments.h"
 #include "libquadmesh/cones/internal/boundary_segments.h"
 #include "libquadmesh/cones/internal/face_geometry.h"
 #include "libquadmesh/cones/internal/translation_classes.h"
@@ -499,8 +500,16 @@ class DeterminedValues {
   std::vector<char> determined_;
 };
 
+/// Strips between two boundary lines this wide in the map before quantization
+/// (quads) are kept from being rounded to nothing (boundary_ligaments.h); wider
+/// ones cannot be (their lines' nearest integers differ), a narrower one is taken
+/// as the two lines meeting.
+constexpr double min_ligament_width = 0.1;
+constexpr double max_ligament_width = 1.2;
+
 /// What one rounding option leaves: whether the seams still close, the values it
-/// makes determined at fractions, the boundary segments of length 0.
+/// makes determined at fractions, the boundary segments of length 0 and the
+/// ligaments without a quad.
 struct RoundingOutcome {
   bool consistent = true;
   std::size_t fractions = 0;
@@ -511,10 +520,16 @@ struct RoundingOutcome {
 /// one nearest to an integer, solve, repeat. Returns the final solution; `fixed`
 /// gets the values made integer.
 Eigen::VectorXd quantize(PenaltySolver& solver, const IntegerCandidates& order, const BoundarySegments& segments,
-                         std::vector<std::pair<int, double>>& integers, SeamlessMapReport& report) {
+                         const std::vector<Ligament>& facing, std::vector<std::pair<int, double>>& integers,
+                         SeamlessMapReport& report) {
   const std::vector<std::vector<int>>& phases = order.phases;
   Eigen::VectorXd z = solver.solve();
   ++report.solves;
+  // the strips between two loops that rounding could leave without a quad
+  const std::vector<Ligament> ligaments = narrow_ligaments(facing, z, min_ligament_width, max_ligament_width);
+  const auto collapsed = [&](const Eigen::VectorXd& x) {
+    return collapsed_segments(segments, x) + collapsed_ligaments(ligaments, x);
+  };
   std::vector<char> fixed(static_cast<std::size_t>(z.size()), 0);
   std::vector<int> all;
   for (const std::vector<int>& candidates : phases) all.insert(all.end(), candidates.begin(), candidates.end());
@@ -549,7 +564,7 @@ Eigen::VectorXd quantize(PenaltySolver& solver, const IntegerCandidates& order, 
       // fractions, then fewest collapsed segments
       for (int v : step) fixed[static_cast<std::size_t>(v)] = 1;
       const RoundingOutcome before{true, determined.at_fractions(solver, fixed, z, report),
-                                   collapsed_segments(segments, z)};
+                                   collapsed(z)};
       const std::vector<std::vector<double>> options = rounding_options(step, z);
       Eigen::VectorXd next;
       std::size_t chosen = 0;
@@ -563,7 +578,7 @@ Eigen::VectorXd quantize(PenaltySolver& solver, const IntegerCandidates& order, 
         // seams then open): never taken
         outcome.consistent = o == 0 || solver.max_residual(next) < max_consistent_residual;
         if (outcome.consistent) {
-          outcome.collapsed = collapsed_segments(segments, next);
+          outcome.collapsed = collapsed(next);
           outcome.fractions = determined.at_fractions(solver, fixed, next, report);
         }
         if (outcome.consistent && outcome.fractions <= before.fractions && outcome.collapsed <= before.collapsed) {
@@ -656,7 +671,8 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   const IntegerCandidates candidates =
       integer_candidates(soup, adjacency, field, cut, quads, translations, variables, order);
   Eigen::VectorXd z =
-      quantize(solver, candidates, boundary_segments(soup, adjacency, field, cut, quads, scales), integers, report);
+      quantize(solver, candidates, boundary_segments(soup, adjacency, field, cut, quads, scales),
+               facing_boundary_lines(soup, adjacency, field, cut, quads), integers, report);
   // stiffening [Bommes et al. 2009]: triangles left folded, and those around
   // them, weigh more in the fit, until none is folded. Not when the integer values
   // contradict the seams (no stiffness closes them), nor once the folds have not

@@ -196,6 +196,52 @@ TriangleSoup stepped_rectangle(double step) {
   return s;
 }
 
+/// A 2 x 1.5 plate with a 1 x 1.05 rectangular hole 0.35 above its bottom edge and
+/// 0.1 below its top: triangles of 1/8 by about 1/8 (the top strip: 1/8 by 0.1).
+TriangleSoup plate_with_hole_near_edge() {
+  std::vector<double> xs, ys{0, 0.125, 0.25, 0.35};
+  for (int i = 0; i <= 16; ++i) xs.push_back(i / 8.0);
+  for (int j = 1; j <= 8; ++j) ys.push_back(0.35 + j * 1.05 / 8);
+  ys.push_back(1.5);
+  TriangleSoup s;
+  std::map<std::pair<std::size_t, std::size_t>, int> id;
+  auto point = [&](std::size_t i, std::size_t j) {
+    const auto [it, fresh] = id.emplace(std::make_pair(i, j), static_cast<int>(s.points.size()));
+    if (fresh) s.points.emplace_back(xs[i], ys[j], 0.0);
+    return it->second;
+  };
+  for (std::size_t i = 0; i + 1 < xs.size(); ++i)
+    for (std::size_t j = 0; j + 1 < ys.size(); ++j) {
+      if (i >= 4 && i < 12 && j >= 3 && j < 11) continue;  // the hole
+      s.triangles.push_back({point(i, j), point(i + 1, j), point(i + 1, j + 1)});
+      s.triangles.push_back({point(i, j), point(i + 1, j + 1), point(i, j + 1)});
+    }
+  return s;
+}
+
+/// The map of `cones` (boundary corners only) at quads of 1/4, where the nearest
+/// integers would put two lines on one: checked for closed seams, a value rounded
+/// to another integer, no inverted triangle and every cone right.
+ConeMap map_rounded_apart(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const std::vector<Cone>& cones) {
+  for (const Cone& c : cones) REQUIRE(c.vertex >= 0);
+  ConeMap m = cone_map(soup, adjacency, cones, 0.25);
+  CHECK(m.report.max_seam_residual < 1e-9);
+  CHECK(m.report.other_integers >= 1);
+  CHECK(m.report.inverted_triangles == 0);
+  check_cones(soup, m.map, cones);
+  return m;
+}
+
+/// The map's quads complete, as many as its image's area, with Euler
+/// characteristic `chi`, no interior singular point, every cone in its quads.
+void check_flat_quads(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const FaceMap& map,
+                      const std::vector<Cone>& cones, int chi) {
+  const LatticeQuads q = complete_quads(soup, adjacency, map);
+  CHECK(static_cast<long>(q.quads.size()) == std::lround(total_image_area(map)));
+  CHECK(euler_and_singular(q) == std::pair{chi, 0});
+  check_cone_quads(q, cones);
+}
+
 std::vector<Cone> square_corners(const TriangleSoup& soup, double side) {
   return {{vertex_at(soup, 0, 0), 1}, {vertex_at(soup, side, 0), 1}, {vertex_at(soup, side, side), 1},
           {vertex_at(soup, 0, side), 1}};
@@ -289,20 +335,30 @@ TEST_CASE("two corners 0.4 quads apart are not rounded onto one lattice point") 
   for (auto [x, y] : {std::pair{0.0, 0.0}, {2.0, 0.0}, {2.0, 1.0}, {1.0, 1.1}, {0.0, 1.1}})
     cones.push_back({vertex_at(soup, x, y), 1});
   cones.push_back({vertex_at(soup, 1.0, 1.0), 3});
-  for (const Cone& c : cones) REQUIRE(c.vertex >= 0);
-  const ConeMap m = cone_map(soup, adjacency, cones, 0.25);
-  CHECK(m.report.max_seam_residual < 1e-9);
-  CHECK(m.report.other_integers >= 1);
-  CHECK(m.report.inverted_triangles == 0);
-  check_cones(soup, m.map, cones);
+  const ConeMap m = map_rounded_apart(soup, adjacency, cones);
   // the step is one quad high: the two corners' images differ by 1 along it
   const Complex low = images_of(soup, m.map, cones[5].vertex).front();
   const Complex high = images_of(soup, m.map, cones[3].vertex).front();
   CHECK(std::abs(high - low) == doctest::Approx(1.0));
-  const LatticeQuads q = complete_quads(soup, adjacency, m.map);
-  CHECK(static_cast<long>(q.quads.size()) == std::lround(total_image_area(m.map)));
-  CHECK(euler_and_singular(q) == std::pair{1, 0});
-  check_cone_quads(q, cones);
+  check_flat_quads(soup, adjacency, m.map, cones, 1);
+}
+
+TEST_CASE("a hole 0.4 quads below the plate's edge: the strip between them is not rounded to nothing") {
+  // quads of 1/4: the hole's top line (5.6) and the edge (6) lie nearest to one
+  // integer; rounded so, the strip has no quads and the map folds across it
+  const TriangleSoup soup = plate_with_hole_near_edge();
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  REQUIRE(adjacency.boundary_loops.size() == 2);
+  std::vector<Cone> cones;
+  for (auto [x, y] : {std::pair{0.0, 0.0}, {2.0, 0.0}, {2.0, 1.5}, {0.0, 1.5}}) cones.push_back({vertex_at(soup, x, y), 1});
+  for (auto [x, y] : {std::pair{0.5, 0.35}, {1.5, 0.35}, {1.5, 1.4}, {0.5, 1.4}})
+    cones.push_back({vertex_at(soup, x, y), 3});
+  const ConeMap m = map_rounded_apart(soup, adjacency, cones);
+  // one quad between the hole's top corner and the plate's top corner above it
+  const Complex hole_top = images_of(soup, m.map, cones[7].vertex).front();
+  const Complex edge_top = images_of(soup, m.map, cones[3].vertex).front();
+  CHECK(std::abs(std::abs((edge_top - hole_top).imag()) - 1.0) < 1e-9);
+  check_flat_quads(soup, adjacency, m.map, cones, 0);
 }
 
 TEST_CASE("an L-shape with a valence-5 cone near the concave corner and a valence-3 cone in the far arm") {
