@@ -99,6 +99,7 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
   split_abel_quads_above_band(best, options, input, stages);
   QuadMeshResult result = std::move(best.result);
   improve_quads(result, options, stages);
+  prefer_field_cones(result, setup, options, input, stages);
   stages.close();
   note_stray_boundary(result);
   if (!result.quads.quads.empty() && result.size_requested > 0)

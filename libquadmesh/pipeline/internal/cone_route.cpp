@@ -15,6 +15,7 @@
 #include "libquadmesh/pipeline/internal/deviation_budget.h"
 #include "libquadmesh/pipeline/internal/quad_improvement.h"
 #include "libquadmesh/quality/hausdorff.h"
+#include "libquadmesh/quality/quad_quality.h"
 #include "libquadmesh/quality/quad_distance.h"
 #include "libquadmesh/quality/size_band.h"
 
@@ -907,6 +908,56 @@ void split_abel_quads_above_band(Candidate& best, const QuadMeshOptions& options
   kept.band = band;
   if (std::optional<ConeCandidate> refined = size_refined(kept, options, input, stages))
     best = std::move(refined->candidate);
+}
+
+namespace {
+
+/// What the acceptance asks of quads as written that the route judged before the
+/// improvement: the mean angle and the size band (QuadQuality's figures).
+struct WrittenFigures {
+  double angle = 0;               ///< mean |corner angle - 90|, degrees
+  bool in_band = false;           ///< size_band_goal of the quads in the band, none above max_size_ratio
+  bool singular_within = false;   ///< interior singular vertices within max(24, 1% of the quads)
+
+  int misses(const AcceptanceCriteria& criteria) const {
+    return static_cast<int>(angle > criteria.max_mean_angle_deviation_deg) + static_cast<int>(!in_band);
+  }
+};
+
+WrittenFigures written_figures(const QuadMeshResult& r) {
+  const QuadQuality q = quad_quality(polygon_mesh(r.quads), nullptr, r.size_requested);
+  const SizeBand band = size_band(r);
+  WrittenFigures out;
+  out.angle = q.angle_dev_mean;
+  out.in_band = band.share_in_band >= size_band_goal && band.max_ratio <= max_size_ratio;
+  out.singular_within = q.irregular_interior <= std::max<std::size_t>(24, r.quads.quads.size() / 100);
+  return out;
+}
+
+}  // namespace
+
+void prefer_field_cones(QuadMeshResult& result, const FormSetup& setup, const QuadMeshOptions& options,
+                        SurfaceTopology input, Stages& stages) {
+  if (options.singularities != Singularities::automatic || options.cone_placement != ConePlacement::greedy ||
+      !options.smoothing || result.singularities != "cones" || result.quads.quads.empty() || !(result.size_requested > 0))
+    return;
+  const WrittenFigures kept = written_figures(result);
+  const int kept_misses = kept.misses(options.acceptance);
+  if (kept_misses == 0) return;
+  stages.announce(fmt::format("the cones' quads as written {}: the smoothest cross field's singularities tried",
+                              kept.in_band ? fmt::format("{:.2f} degrees from right angles on average", kept.angle)
+                                           : std::string("off the size band")));
+  const FormSetup turned = turned_boundary_setup(setup);
+  std::optional<ConeCandidate> field = field_candidate(turned, options, stages);
+  if (!field || !acceptable(*field, options, turned.diagonal, input, stages)) return;
+  QuadMeshResult& candidate = field->candidate.result;
+  improve_quads(candidate, options, stages);
+  const WrittenFigures other = written_figures(candidate);
+  const int other_misses = other.misses(options.acceptance);
+  // fewer criteria missed, or only the angle missed by both and less by the field's
+  const bool better = other_misses < kept_misses || (other_misses == 1 && kept_misses == 1 && kept.in_band &&
+                                                      other.in_band && other.angle < kept.angle);
+  if (better && other.singular_within) result = std::move(candidate);
 }
 
 void keep_nearer_cones(Candidate& best, ConeRouteOutcome& outcome, const QuadMeshOptions& options,
