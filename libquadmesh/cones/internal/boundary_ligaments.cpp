@@ -71,12 +71,16 @@ std::vector<Ligament> facing_boundary_lines(const TriangleSoup& soup, const Surf
     return std::min(d, n - d) >= min_loop_separation;
   };
   std::vector<Ligament> out;
+  // each pair once (an edge is met from both ends, a path through every vertex and
+  // triangle on it)
+  std::set<std::pair<int, int>> seen;
   // a pair facing in one chart: a's corner wedge and b's, each one of its lines'
   const auto add = [&](int a, int wedge_a, int b, int wedge_b) {
     if (a == b || !far_apart(a, b)) return;
     const int across = across_in(lines[static_cast<std::size_t>(a)], wedge_a);
     if (across < 0 || across != across_in(lines[static_cast<std::size_t>(b)], wedge_b)) return;
-    out.push_back({2 * wedge_a + across, 2 * wedge_b + across, 1.0});
+    const Ligament l{2 * wedge_a + across, 2 * wedge_b + across, 1.0};
+    if (seen.insert(std::minmax(l.line_from, l.line_to)).second) out.push_back(l);
   };
   const auto straight = [&](int v) { return !lines[static_cast<std::size_t>(v)].empty(); };
   // through a vertex m: the far corners of m's triangles, paired where m's wedge is
@@ -109,11 +113,9 @@ std::vector<Ligament> facing_boundary_lines(const TriangleSoup& soup, const Surf
 std::vector<Ligament> narrow_ligaments(const std::vector<Ligament>& facing, const Eigen::VectorXd& z,
                                        double min_width, double max_width) {
   std::vector<Ligament> out;
-  std::set<std::pair<int, int>> seen;
   for (Ligament l : facing) {
     const double width = z[l.line_to] - z[l.line_from];
     if (std::abs(width) < min_width || std::abs(width) > max_width) continue;
-    if (!seen.insert(std::minmax(l.line_from, l.line_to)).second) continue;
     l.sign = width > 0 ? 1 : -1;
     out.push_back(l);
   }

@@ -30,15 +30,14 @@ struct Ligament {
 
 /// Pairs of straight boundary vertices (2 quads) joined by one edge, or by two
 /// through a vertex whose corners lie in one chart, on different loops or far apart
-/// along one, whose boundary lines run along the same coordinate there. Their
-/// widths are not known yet (sign 1).
+/// along one, whose boundary lines run along the same coordinate there: each pair
+/// of lines once. Their widths are not known yet (sign 1).
 std::vector<Ligament> facing_boundary_lines(const TriangleSoup& soup, const SurfaceAdjacency& adjacency,
                                             const CrossField& field, const CutGraph& cut,
                                             const std::vector<int>& quads);
 
 /// The pairs whose width in z (a map before quantization) lies between
-/// `min_width` and `max_width` quads, each with the sign of that width; duplicates
-/// dropped.
+/// `min_width` and `max_width` quads, each with the sign of that width.
 std::vector<Ligament> narrow_ligaments(const std::vector<Ligament>& facing, const Eigen::VectorXd& z,
                                        double min_width, double max_width);
 

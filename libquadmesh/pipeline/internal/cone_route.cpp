@@ -917,7 +917,7 @@ namespace {
 struct WrittenFigures {
   double angle = 0;               ///< mean |corner angle - 90|, degrees
   bool in_band = false;           ///< size_band_goal of the quads in the band, none above max_size_ratio
-  bool singular_within = false;   ///< interior singular vertices within max(24, 1% of the quads)
+  bool singular_within = false;   ///< interior singular vertices within the placement's bound
 
   int misses(const AcceptanceCriteria& criteria) const {
     return static_cast<int>(angle > criteria.max_mean_angle_deviation_deg) + static_cast<int>(!in_band);
@@ -929,8 +929,11 @@ WrittenFigures written_figures(const QuadMeshResult& r) {
   const SizeBand band = size_band(r);
   WrittenFigures out;
   out.angle = q.angle_dev_mean;
-  out.in_band = band.share_in_band >= size_band_goal && band.max_ratio <= max_size_ratio;
-  out.singular_within = q.irregular_interior <= std::max<std::size_t>(24, r.quads.quads.size() / 100);
+  out.in_band = in_size_band(band);
+  const ConePlacementOptions bound;  // issue 18's bound on interior singular vertices
+  out.singular_within = static_cast<double>(q.irregular_interior) <=
+                        std::max(bound.max_interior_cones,
+                                 bound.max_interior_cone_share * static_cast<double>(r.quads.quads.size()));
   return out;
 }
 
