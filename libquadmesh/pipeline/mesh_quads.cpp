@@ -67,6 +67,7 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
 
   // auto on a surface with CAD corners: the cone route first (cone_route.h)
   ConesFirst first = try_cones_first(setup, options, input, stages);
+  const bool cones_tried_first = first.tried.has_value() || !first.failure.empty();
   Candidate best;
   ConeRouteOutcome cones;
   int form_attempts = 0, rounding_attempts = 0;
@@ -100,6 +101,7 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
   QuadMeshResult result = std::move(best.result);
   improve_quads(result, options, stages);
   prefer_field_cones(result, setup, options, input, stages);
+  prefer_cones_to_written_abel(result, cones_tried_first || !cones.failure.empty(), setup, options, input, stages);
   stages.close();
   note_stray_boundary(result);
   if (!result.quads.quads.empty() && result.size_requested > 0)

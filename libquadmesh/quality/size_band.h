@@ -16,6 +16,9 @@ constexpr double size_band_low = 0.5;
 constexpr double size_band_high = 2.0;
 /// The largest quad issue 18's acceptance allows, as a multiple of the target size.
 constexpr double size_ratio_limit = 3.0;
+/// The share of quads within [size_band_low, size_band_high] x the target issue
+/// 18's acceptance asks for (below it, `auto` tries cones).
+constexpr double size_band_goal = 0.9;
 
 struct SizeBand {
   std::size_t quads = 0;       ///< faces with 4 corners measured

@@ -963,6 +963,30 @@ void prefer_field_cones(QuadMeshResult& result, const FormSetup& setup, const Qu
   if (better && other.singular_within) result = std::move(candidate);
 }
 
+void prefer_cones_to_written_abel(QuadMeshResult& result, bool cones_tried, const FormSetup& setup,
+                                  const QuadMeshOptions& options, SurfaceTopology input, Stages& stages) {
+  if (options.singularities != Singularities::automatic || !options.smoothing || cones_tried ||
+      result.singularities != "abel" || result.quads.quads.empty() || !(result.size_requested > 0))
+    return;
+  const WrittenFigures kept = written_figures(result);
+  if (kept.in_band) return;
+  stages.announce(fmt::format("the Abel quads as written leave {:.1f}% of them in the size band: quarter-turn cones "
+                              "tried",
+                              100 * size_band(result).share_in_band));
+  std::optional<ConeCandidate> cones;
+  try {
+    cones = cone_candidate(setup, options, input, stages);
+  } catch (const Error&) {
+    return;  // no cones: the Abel quads stand
+  }
+  if (!acceptable(*cones, options, setup.diagonal, input, stages)) return;
+  QuadMeshResult& candidate = cones->candidate.result;
+  improve_quads(candidate, options, stages);
+  const WrittenFigures other = written_figures(candidate);
+  if (other.misses(options.acceptance) < kept.misses(options.acceptance) && other.singular_within)
+    result = std::move(candidate);
+}
+
 void keep_nearer_cones(Candidate& best, ConeRouteOutcome& outcome, const QuadMeshOptions& options,
                        SurfaceTopology input, Stages& stages) {
   if (!outcome.too_far) return;

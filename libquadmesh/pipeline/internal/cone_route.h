@@ -19,9 +19,6 @@
 
 namespace qm {
 
-/// The share of quads within [0.5, 2] x the size below which `auto` tries cones.
-constexpr double size_band_goal = 0.9;
-
 /// Meshes `setup.soup` by the cone route at the requested quad edge times
 /// `lattice_factor` (the quality still measured against the requested one): the result
 /// (the preamble's fields, surface, quads, boundary loops of the points, cones,
@@ -273,5 +270,19 @@ void split_abel_quads_above_band(Candidate& best, const QuadMeshOptions& options
 /// band). Elsewhere the greedy cones stay (fewer singular vertices for the band).
 void prefer_field_cones(QuadMeshResult& result, const FormSetup& setup, const QuadMeshOptions& options,
                         SurfaceTopology input, Stages& stages);
+
+/// Singularities::automatic, where the Abel quads kept (`result`, improved as
+/// written) miss the size band while the route judged them in it as mapped (the
+/// smoothing moved their corners since) and so never tried the cones: the cone
+/// route's candidate (cone_candidate) is mapped, judged and improved, and
+/// replaces `result` when it is acceptable to the route (sound, in the size band,
+/// every corner in its quad count, within the acceptance's distance of S), misses
+/// fewer of the mean angle and the band as written, and keeps its interior
+/// singular vertices within max(24, 1% of the quads). Not when the route was
+/// tried before (`cones_tried`: first, or where the Abel quads missed as mapped).
+/// A flanged pipe at 2%: its Abel quads 90.2% in the band as mapped, 89.8% as
+/// written.
+void prefer_cones_to_written_abel(QuadMeshResult& result, bool cones_tried, const FormSetup& setup,
+                                  const QuadMeshOptions& options, SurfaceTopology input, Stages& stages);
 
 }  // namespace qm
