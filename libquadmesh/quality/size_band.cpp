@@ -42,4 +42,8 @@ SizeBand scaled_size_band(const std::vector<double>& ratios, double factor) {
 
 SizeBand quad_size_band(const PolygonMesh& mesh, double target) { return scaled_size_band(quad_size_ratios(mesh, target), 1.0); }
 
+bool in_size_band(const SizeBand& band) {
+  return band.share_in_band >= size_band_goal && band.max_ratio <= size_ratio_limit;
+}
+
 }  // namespace qm

@@ -30,6 +30,10 @@ struct SizeBand {
 /// Precondition: target > 0.
 SizeBand quad_size_band(const PolygonMesh& mesh, double target);
 
+/// Whether quads of this size band meet issue 18's acceptance: size_band_goal of
+/// them in the band and none above size_ratio_limit x the target.
+bool in_size_band(const SizeBand& band);
+
 /// Each quad's size / target, in face order (faces with 4 corners only).
 /// Precondition: target > 0.
 std::vector<double> quad_size_ratios(const PolygonMesh& mesh, double target);

@@ -364,16 +364,15 @@ constexpr std::size_t off_band_retries = 1;
 enum class TriangulationStanding { not_conforming, inverted, off_band, sound };
 
 /// `r`'s standing against `in`: require_conforming's topology, then no inverted or
-/// turned-over quad (a solver rejects them), then size_band_goal of them within the
-/// size band and none above size_ratio_limit x the size.
+/// turned-over quad (a solver rejects them), then in the size band (in_size_band).
 TriangulationStanding triangulation_standing(const QuadMeshResult& r, const InputSurface& in) {
-  const QuadQuality q = quad_quality(polygon_mesh(r.quads), nullptr, r.size_requested);
+  const PolygonMesh mesh = polygon_mesh(r.quads);
+  const QuadQuality q = quad_quality(mesh, nullptr);
   if (!conforms(q, static_cast<int>(in.surface.report.euler_characteristic),
                 static_cast<int>(in.surface.report.boundary_loop_count())))
     return TriangulationStanding::not_conforming;
   if (q.inverted + q.flipped > 0) return TriangulationStanding::inverted;
-  if (!(q.size_band_share >= size_band_goal && q.size_ratio_max <= size_ratio_limit))
-    return TriangulationStanding::off_band;
+  if (!in_size_band(quad_size_band(mesh, r.size_requested))) return TriangulationStanding::off_band;
   return TriangulationStanding::sound;
 }
 

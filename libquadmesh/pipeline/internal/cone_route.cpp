@@ -213,12 +213,6 @@ SizeBand size_band(const QuadMeshResult& r) {
   return quad_size_band(polygon_mesh(r.quads), r.size_requested);
 }
 
-/// Whether quads of this size band meet the acceptance's: size_band_goal of them
-/// in the band and none above max_size_ratio.
-bool in_size_band(const SizeBand& band) {
-  return band.share_in_band >= size_band_goal && band.max_ratio <= max_size_ratio;
-}
-
 /// A placement is made again this many times at most, each time away from the
 /// cones its last map folded round (misturned: cone_winding.h), and only when its
 /// quads, folded, have size_band_goal of them in the size band and none above
@@ -916,6 +910,7 @@ namespace {
 /// improvement: the mean angle and the size band (QuadQuality's figures).
 struct WrittenFigures {
   double angle = 0;               ///< mean |corner angle - 90|, degrees
+  double share_in_band = 0;       ///< of the quads, the share in the size band
   bool in_band = false;           ///< size_band_goal of the quads in the band, none above max_size_ratio
   bool singular_within = false;   ///< interior singular vertices within the placement's bound
 
@@ -924,17 +919,36 @@ struct WrittenFigures {
   }
 };
 
+/// Precondition: `r` has quads and a requested size.
 WrittenFigures written_figures(const QuadMeshResult& r) {
-  const QuadQuality q = quad_quality(polygon_mesh(r.quads), nullptr, r.size_requested);
-  const SizeBand band = size_band(r);
+  const PolygonMesh mesh = polygon_mesh(r.quads);
+  const QuadQuality q = quad_quality(mesh, nullptr);
+  const SizeBand band = quad_size_band(mesh, r.size_requested);
   WrittenFigures out;
   out.angle = q.angle_dev_mean;
+  out.share_in_band = band.share_in_band;
   out.in_band = in_size_band(band);
   const ConePlacementOptions bound;  // issue 18's bound on interior singular vertices
   out.singular_within = static_cast<double>(q.irregular_interior) <=
                         std::max(bound.max_interior_cones,
                                  bound.max_interior_cone_share * static_cast<double>(r.quads.quads.size()));
   return out;
+}
+
+/// `cones`, where it is acceptable to the route, improved as written; it replaces
+/// `result` (whose written figures are `kept`, some criterion missed) when it misses
+/// fewer of the mean angle and the band as written, or only the angle, as `kept`
+/// does, by less, and keeps its interior singular vertices within the bound.
+void keep_if_better_written(QuadMeshResult& result, const WrittenFigures& kept, std::optional<ConeCandidate> cones,
+                            const QuadMeshOptions& options, double diagonal, SurfaceTopology input, Stages& stages) {
+  if (!cones || !acceptable(*cones, options, diagonal, input, stages)) return;
+  QuadMeshResult& candidate = cones->candidate.result;
+  improve_quads(candidate, options, stages);
+  const WrittenFigures other = written_figures(candidate);
+  const int kept_misses = kept.misses(options.acceptance), other_misses = other.misses(options.acceptance);
+  const bool better = other_misses < kept_misses || (other_misses == 1 && kept_misses == 1 && kept.in_band &&
+                                                      other.in_band && other.angle < kept.angle);
+  if (better && other.singular_within) result = std::move(candidate);
 }
 
 }  // namespace
@@ -945,22 +959,13 @@ void prefer_field_cones(QuadMeshResult& result, const FormSetup& setup, const Qu
       !options.smoothing || result.singularities != "cones" || result.quads.quads.empty() || !(result.size_requested > 0))
     return;
   const WrittenFigures kept = written_figures(result);
-  const int kept_misses = kept.misses(options.acceptance);
-  if (kept_misses == 0) return;
+  if (kept.misses(options.acceptance) == 0) return;
   stages.announce(fmt::format("the cones' quads as written {}: the smoothest cross field's singularities tried",
                               kept.in_band ? fmt::format("{:.2f} degrees from right angles on average", kept.angle)
                                            : std::string("off the size band")));
   const FormSetup turned = turned_boundary_setup(setup);
-  std::optional<ConeCandidate> field = field_candidate(turned, options, stages);
-  if (!field || !acceptable(*field, options, turned.diagonal, input, stages)) return;
-  QuadMeshResult& candidate = field->candidate.result;
-  improve_quads(candidate, options, stages);
-  const WrittenFigures other = written_figures(candidate);
-  const int other_misses = other.misses(options.acceptance);
-  // fewer criteria missed, or only the angle missed by both and less by the field's
-  const bool better = other_misses < kept_misses || (other_misses == 1 && kept_misses == 1 && kept.in_band &&
-                                                      other.in_band && other.angle < kept.angle);
-  if (better && other.singular_within) result = std::move(candidate);
+  keep_if_better_written(result, kept, field_candidate(turned, options, stages), options, turned.diagonal, input,
+                         stages);
 }
 
 void prefer_cones_to_written_abel(QuadMeshResult& result, bool cones_tried, const FormSetup& setup,
@@ -972,19 +977,15 @@ void prefer_cones_to_written_abel(QuadMeshResult& result, bool cones_tried, cons
   if (kept.in_band) return;
   stages.announce(fmt::format("the Abel quads as written leave {:.1f}% of them in the size band: quarter-turn cones "
                               "tried",
-                              100 * size_band(result).share_in_band));
+                              100 * kept.share_in_band));
   std::optional<ConeCandidate> cones;
   try {
     cones = cone_candidate(setup, options, input, stages);
   } catch (const Error&) {
     return;  // no cones: the Abel quads stand
   }
-  if (!acceptable(*cones, options, setup.diagonal, input, stages)) return;
-  QuadMeshResult& candidate = cones->candidate.result;
-  improve_quads(candidate, options, stages);
-  const WrittenFigures other = written_figures(candidate);
-  if (other.misses(options.acceptance) < kept.misses(options.acceptance) && other.singular_within)
-    result = std::move(candidate);
+  // (the Abel quads miss the band: only fewer criteria missed replace them)
+  keep_if_better_written(result, kept, std::move(cones), options, setup.diagonal, input, stages);
 }
 
 void keep_nearer_cones(Candidate& best, ConeRouteOutcome& outcome, const QuadMeshOptions& options,
