@@ -18,6 +18,8 @@
 #include "libquadmesh/cones/tip_shear.h"
 #include "libquadmesh/param/face_map.h"
 
+#include <optional>
+
 namespace qm {
 
 struct SeamlessMapReport {
@@ -34,6 +36,9 @@ struct SeamlessMapReport {
   /// one lattice point (cones/internal/boundary_segments.h) or a value the integers
   /// determine off a half or a quarter
   std::size_t other_integers = 0;
+  /// maps quantized again from chosen lattice offsets, where the first folded
+  /// round a cone it winds a turn short (cone_map.h; set by cone_map)
+  int lattice_shifts = 0;
 };
 
 /// The order the quantization makes values integer in, phase by phase. The cones'
@@ -48,11 +53,16 @@ enum class RoundingOrder { cones_first, translations_first };
 /// Per triangle corner, the value of the wedge it belongs to. `u` from
 /// cone_metric, `size` the target quad edge in the surface's units (> 0); `shape`,
 /// when given, what the fit asks of the gradient beside the scaled frame (the
-/// acute tips' shear, tip_shear.h).
+/// acute tips' shear, tip_shear.h). The fit leaves the map's translation free,
+/// and the quantization starts from wherever the first solve's round-off puts it;
+/// with `lattice_shift` (lattice units) the map is first moved to the translation
+/// that brings the values made integer nearest to integers (their circular mean
+/// per axis) plus the shift: the same cones quantized from a chosen offset of the
+/// lattice (cone_map.h tries some where the map folds round a cone).
 /// Throws qm::Error (solver) when the system cannot be factored.
 FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u,
                      const CrossField& field, const CutGraph& cut, const std::vector<int>& quads, double size,
                      SeamlessMapReport& report, RoundingOrder order = RoundingOrder::cones_first,
-                     const FitShape* shape = nullptr);
+                     const FitShape* shape = nullptr, std::optional<Complex> lattice_shift = std::nullopt);
 
 }  // namespace qm

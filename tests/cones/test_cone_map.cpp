@@ -5,6 +5,7 @@
 #include "libquadmesh/cones/cone_map.h"
 #include "libquadmesh/cones/cone_metric.h"
 #include "libquadmesh/cones/cone_placement.h"
+#include "libquadmesh/cones/seamless_map.h"
 #include "libquadmesh/cones/wide_corners.h"
 #include "libquadmesh/extract/lattice_quads.h"
 #include "libquadmesh/forms/long_edges.h"
@@ -303,6 +304,47 @@ TEST_CASE("a valence-3/5 pair inside a square: quarter-turn transitions, cones o
   CHECK(static_cast<long>(q.quads.size()) == std::lround(total_image_area(m.map)));
   CHECK(euler_and_singular(q) == std::pair{1, 2});
   check_cone_quads(q, cones);
+}
+
+TEST_CASE("the quantization starts from the values' lattice offset: a whole quad's shift moves the map, nothing "
+          "else") {
+  // before quantization the map is free to translate, and the first solve leaves
+  // it where round-off does (a tenth of a quad between two orderings of
+  // bunny-open's system); seamless_map moves it to the values' circular mean
+  // first, so only the lattice shift asked for decides where the rounding starts:
+  // a whole quad moves the same integers by one (up to the gauge's faint pull)
+  const TriangleSoup soup = test::grid(24);
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  std::vector<Cone> cones = square_corners(soup, 1.0);
+  cones.push_back({vertex_at(soup, 7.0 / 24, 11.0 / 24), 3});
+  cones.push_back({vertex_at(soup, 16.0 / 24, 13.0 / 24), 5});
+  const double size = 1.0 / 9.5;  // the cones and the sides off the lattice before rounding
+  const ConeMap m = cone_map(soup, adjacency, cones, size);
+  CHECK(m.report.lattice_shifts == 0);  // nothing folded
+  const auto map_at = [&](Complex shift) {
+    SeamlessMapReport report;
+    const FaceMap map = seamless_map(soup, adjacency, m.u, m.field, m.cut, m.quads, size, report,
+                                     RoundingOrder::cones_first, nullptr, shift);
+    CHECK(report.inverted_triangles == 0);
+    CHECK(report.max_seam_residual < 1e-9);
+    check_cones(soup, map, cones);
+    return map;
+  };
+  // the largest difference of two maps' corners from `moved`
+  const auto largest_gap = [&](const FaceMap& a, const FaceMap& b, Complex moved) {
+    double gap = 0;
+    for (std::size_t f = 0; f < a.corners.size(); ++f)
+      for (std::size_t k = 0; k < 3; ++k) gap = std::max(gap, std::abs(b.corners[f][k] - a.corners[f][k] - moved));
+    return gap;
+  };
+  const FaceMap at_zero = map_at({0, 0});
+  CHECK(largest_gap(at_zero, map_at({1, 0}), {1, 0}) < 1e-6);
+  CHECK(largest_gap(at_zero, map_at({0, -2}), {0, -2}) < 1e-6);
+  CHECK(largest_gap(at_zero, map_at({3, 1}), {3, 1}) < 1e-6);
+  // from half a quad the rounding starts elsewhere and still closes every seam
+  // with the cones on lattice points
+  map_at({0.5, 0});
+  map_at({0.5, 0.5});
 }
 
 TEST_CASE("an L-shape with its five convex corners and one concave corner maps onto a lattice L") {

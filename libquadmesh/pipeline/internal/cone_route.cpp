@@ -175,6 +175,10 @@ Candidate cone_quads(const FormSetup& setup, std::vector<Cone> cones, Stages& st
   stages.next("cone_map", fmt::format("the seamless map with {} corner and {} interior cones", corners,
                                       static_cast<int>(r.cones.size()) - corners));
   const ConeMap map = cone_map(soup, adjacency, r.cones, size, order);
+  if (map.report.lattice_shifts > 0)
+    stages.announce(fmt::format("the map folded round a cone it winds round a turn short: quantized again from "
+                                "other offsets of the lattice ({} tried), {} folded triangles left",
+                                map.report.lattice_shifts, map.report.inverted_triangles));
   if (order == RoundingOrder::translations_first) r.rounding_order = "translations_first";
   r.cone_map = map.report;
   if (misturned) *misturned = map.misturned;
