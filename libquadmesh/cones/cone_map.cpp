@@ -5,8 +5,11 @@
 #include "libquadmesh/cones/tip_scale.h"
 #include "libquadmesh/cones/tip_shear.h"
 #include "libquadmesh/core/error.h"
+#include "libquadmesh/core/parallel.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <string>
 
 namespace qm {
@@ -81,18 +84,28 @@ ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, co
   if (out.report.inverted_triangles > 0) out.misturned = misturned_cones(soup, adjacency, out.map, out.quads);
   // a map folded round one cone it winds a turn short is quantized again from
   // chosen offsets of the lattice (the rounding then takes other integers from the
-  // start); the first unfolded map is kept, else the one with fewest folds
-  for (const Complex shift : lattice_shifts) {
-    if (out.misturned.size() != 1) break;
-    SeamlessMapReport report;
-    FaceMap map = seamless_map(soup, adjacency, scale, out.field, out.cut, out.quads, size, report, order, &shape, shift);
-    report.lattice_shifts = out.report.lattice_shifts + 1;
-    out.report.lattice_shifts = report.lattice_shifts;
-    if (report.inverted_triangles >= out.report.inverted_triangles) continue;
-    out.map = std::move(map);
-    out.report = report;
-    out.misturned = report.inverted_triangles > 0 ? misturned_cones(soup, adjacency, out.map, out.quads)
-                                                  : std::vector<int>{};
+  // start), in order while the kept map is so folded: a map with fewer folds is
+  // kept. As many offsets are mapped at once as there are worker threads, and
+  // taken in order (a map past the one that ends it is dropped): the same map on
+  // any number of threads
+  const std::size_t shifts = std::size(lattice_shifts);
+  for (std::size_t next = 0; next < shifts && out.misturned.size() == 1;) {
+    const std::size_t width = std::min(shifts - next, std::max<std::size_t>(1, worker_threads()));
+    std::vector<FaceMap> maps(width);
+    std::vector<SeamlessMapReport> reports(width);
+    parallel_for_index(width, [&](std::size_t i) {
+      maps[i] = seamless_map(soup, adjacency, scale, out.field, out.cut, out.quads, size, reports[i], order, &shape,
+                             lattice_shifts[next + i]);
+    });
+    for (std::size_t i = 0; i < width && out.misturned.size() == 1; ++i, ++next) {
+      reports[i].lattice_shifts = out.report.lattice_shifts + 1;
+      out.report.lattice_shifts = reports[i].lattice_shifts;
+      if (reports[i].inverted_triangles >= out.report.inverted_triangles) continue;
+      out.map = std::move(maps[i]);
+      out.report = reports[i];
+      out.misturned = out.report.inverted_triangles > 0 ? misturned_cones(soup, adjacency, out.map, out.quads)
+                                                        : std::vector<int>{};
+    }
   }
   return out;
 }
