@@ -89,7 +89,8 @@ ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, co
   // taken in order (a map past the one that ends it is dropped): the same map on
   // any number of threads
   const std::size_t shifts = std::size(lattice_shifts);
-  for (std::size_t next = 0; next < shifts && out.misturned.size() == 1;) {
+  std::size_t next = 0;  // the offsets taken so far
+  while (next < shifts && out.misturned.size() == 1) {
     const std::size_t width = std::min(shifts - next, std::max<std::size_t>(1, worker_threads()));
     std::vector<FaceMap> maps(width);
     std::vector<SeamlessMapReport> reports(width);
@@ -98,8 +99,6 @@ ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, co
                              lattice_shifts[next + i]);
     });
     for (std::size_t i = 0; i < width && out.misturned.size() == 1; ++i, ++next) {
-      reports[i].lattice_shifts = out.report.lattice_shifts + 1;
-      out.report.lattice_shifts = reports[i].lattice_shifts;
       if (reports[i].inverted_triangles >= out.report.inverted_triangles) continue;
       out.map = std::move(maps[i]);
       out.report = reports[i];
@@ -107,6 +106,7 @@ ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, co
                                                         : std::vector<int>{};
     }
   }
+  out.report.lattice_shifts = static_cast<int>(next);
   return out;
 }
 

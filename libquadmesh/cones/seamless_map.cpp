@@ -559,13 +559,11 @@ void translate(Eigen::VectorXd& z, Complex c, int wedge_values, const std::vecto
     z[v] += c.real();
     z[v + 1] += c.imag();
   }
+  const std::array<double, 2> xy{c.real(), c.imag()};
   for (const Translation& t : translations) {
+    // i^q c by the tables the transition rows use
     const int q = t.ends[0].quarter_turns;
-    const Complex turned(turned_sign[q][0] * (turned_from[q][0] == 0 ? c.real() : c.imag()),
-                         turned_sign[q][1] * (turned_from[q][1] == 0 ? c.real() : c.imag()));
-    const Complex shift = c - turned;
-    z[t.variable] += shift.real();
-    z[t.variable + 1] += shift.imag();
+    for (int k = 0; k < 2; ++k) z[t.variable + k] += xy[k] - turned_sign[q][k] * xy[turned_from[q][k]];
   }
 }
 
