@@ -19,7 +19,6 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <unordered_map>
 
 namespace qm {
 
@@ -51,19 +50,45 @@ std::vector<double> distance_to_boundary(const TriangleSoup& soup, const Surface
   return distance_from(soup, adjacency, boundary);
 }
 
-/// Vertices within `rings` edges of v (v included).
-std::vector<int> ring_neighbourhood(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, int v, int rings) {
-  std::vector<int> out{v};
-  std::unordered_map<int, int> depth{{v, 0}};
-  for (std::size_t next = 0; next < out.size(); ++next) {
-    const int w = out[next];
-    if (depth[w] == rings) continue;
-    for (int f : adjacency.vertex_faces[static_cast<std::size_t>(w)])
-      for (int x : soup.triangles[static_cast<std::size_t>(f)])
-        if (depth.emplace(x, depth[w] + 1).second) out.push_back(x);
+/// Vertices within `rings` edges of a vertex (itself first, then breadth first),
+/// walked with marks kept across calls: a walk costs the vertices it reaches, not
+/// the surface's (the alignment walks thousands of times on one placement).
+class RingNeighbourhood {
+ public:
+  RingNeighbourhood(const TriangleSoup& soup, const SurfaceAdjacency& adjacency)
+      : soup_(soup), adjacency_(adjacency), stamp_(soup.points.size(), 0), depth_(soup.points.size(), 0) {}
+
+  const std::vector<int>& around(int v, int rings) {
+    ++walk_;
+    out_.assign(1, v);
+    mark(v, 0);
+    for (std::size_t next = 0; next < out_.size(); ++next) {
+      const int w = out_[next];
+      const int d = depth_[static_cast<std::size_t>(w)];
+      if (d == rings) continue;
+      for (int f : adjacency_.vertex_faces[static_cast<std::size_t>(w)])
+        for (int x : soup_.triangles[static_cast<std::size_t>(f)])
+          if (stamp_[static_cast<std::size_t>(x)] != walk_) {
+            mark(x, d + 1);
+            out_.push_back(x);
+          }
+    }
+    return out_;
   }
-  return out;
-}
+
+ private:
+  void mark(int v, int depth) {
+    stamp_[static_cast<std::size_t>(v)] = walk_;
+    depth_[static_cast<std::size_t>(v)] = depth;
+  }
+
+  const TriangleSoup& soup_;
+  const SurfaceAdjacency& adjacency_;
+  std::vector<unsigned> stamp_;  ///< the walk that last reached each vertex
+  std::vector<int> depth_;       ///< its depth in that walk
+  std::vector<int> out_;
+  unsigned walk_ = 0;
+};
 
 /// Whether a vertex lies within `separation` edges of an interior cone other than
 /// cones[moving], or nearer than `min_distance` to one (straight line: on a fine
@@ -136,6 +161,7 @@ double align_loops_by_cones(const TriangleSoup& soup, const SurfaceAdjacency& ad
   };
   double current = cost(dot);
   ConeCrowding crowding(soup, adjacency, separation, min_distance);
+  RingNeighbourhood ring(soup, adjacency);
   // when no move within `rings` edges helps any more and the loops are still
   // turned, the cones may go farther (on a coarse triangulation `rings` edges
   // are a few quads only)
@@ -149,7 +175,7 @@ double align_loops_by_cones(const TriangleSoup& soup, const SurfaceAdjacency& ad
         int best = -1;
         std::vector<double> best_dot;
         const auto moving = static_cast<std::size_t>(&cone - cones.data());
-        for (int w : ring_neighbourhood(soup, adjacency, cone.vertex, widen * rings)) {
+        for (int w : ring.around(cone.vertex, widen * rings)) {
           const auto sw = static_cast<std::size_t>(w);
           if (!eligible[sw]) continue;
           std::vector<double> trial = dot;
@@ -228,6 +254,7 @@ void relax_cones_for_size(const TriangleSoup& soup, const SurfaceAdjacency& adja
   double spread = size_spread(u, area, mean);
   double aligned = alignment_cost(cones);
   ConeCrowding crowding(soup, adjacency, separation, min_distance);
+  RingNeighbourhood ring(soup, adjacency);
   for (int pass = 0; pass < passes; ++pass) {
     Eigen::VectorXd weighted(u.size());
     for (Eigen::Index v = 0; v < u.size(); ++v) weighted[v] = area[static_cast<std::size_t>(v)] * (u[v] - mean);
@@ -240,7 +267,7 @@ void relax_cones_for_size(const TriangleSoup& soup, const SurfaceAdjacency& adja
       // the neighbours by the first-order drop, largest first (the first of equal
       // ones), the first not crowded by another cone taken
       std::vector<std::pair<double, int>> moves;
-      for (int b : ring_neighbourhood(soup, adjacency, a, 1)) {
+      for (int b : ring.around(a, 1)) {
         const double drop = k * (g[a] - g[b]);
         if (b != a && eligible[static_cast<std::size_t>(b)] && drop > 0) moves.push_back({drop, b});
       }

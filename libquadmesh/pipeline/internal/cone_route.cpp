@@ -234,13 +234,17 @@ constexpr int max_placements_elsewhere = 2;
 /// again, 94% of the quads in the size band and nothing folded).
 ConeAttempt run_attempt(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages,
                         double lattice_factor, bool smooth_inverted,
-                        const std::vector<std::vector<Cone>>* placed = nullptr) {
+                        const std::vector<std::vector<Cone>>* placed = nullptr,
+                        std::unique_ptr<PlacementSurface>* surface = nullptr) {
   ConeAttempt attempt;
   try {
     // the metrics solved for are kept for the placement made again, which repeats
-    // the first's steps up to where the cones avoided change them
-    const SurfaceAdjacency adjacency = surface_adjacency(setup.soup);
-    const ConeMetricSolver metrics(setup.soup, adjacency);
+    // the first's steps up to where the cones avoided change them (and, with
+    // `surface`, for the placements after this one)
+    std::unique_ptr<PlacementSurface> own;
+    if (!surface) surface = &own;
+    if (!*surface) *surface = std::make_unique<PlacementSurface>(setup.soup);
+    const ConeMetricSolver& metrics = (*surface)->metrics;
     attempt.cones = placed_cones(setup, placement, stages, lattice_factor, metrics);
     if (placed && placed_before(*attempt.cones, *placed)) return attempt;
     std::vector<int> misturned;
@@ -304,16 +308,21 @@ FormSetup turned_boundary_setup(const FormSetup& setup) {
   return out;
 }
 
+PlacementSurface::PlacementSurface(const TriangleSoup& soup) : adjacency(surface_adjacency(soup)), metrics(soup, adjacency) {}
+
 std::vector<ConeAttempt> cone_attempts_side_by_side(const FormSetup& setup,
                                                     const std::vector<ConePlacementOptions>& placements,
-                                                    double lattice_factor, bool smooth_inverted) {
+                                                    double lattice_factor, bool smooth_inverted,
+                                                    PlacementSurfaces* surfaces) {
   std::vector<ConeAttempt> out(placements.size());
+  if (surfaces && surfaces->size() < placements.size()) surfaces->resize(placements.size());
   parallel_for_index(placements.size(), [&](std::size_t i) {
     std::vector<std::string> messages;
     std::vector<std::pair<std::string, double>> timings;
     const ProgressCallback record = [&messages](const std::string& message) { messages.push_back(message); };
     Stages stages(timings, record);
-    out[i] = run_attempt(setup, placements[i], stages, lattice_factor, smooth_inverted);
+    out[i] = run_attempt(setup, placements[i], stages, lattice_factor, smooth_inverted, nullptr,
+                         surfaces ? &(*surfaces)[i] : nullptr);
     stages.close();
     out[i].messages = std::move(messages);
     out[i].timings = std::move(timings);
@@ -519,6 +528,8 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
   // several seconds, on one core); the first acceptable one in order is kept, as
   // one at a time would, and what a placement after it found is dropped
   const std::size_t width = std::max<std::size_t>(1, std::min<std::size_t>(placements_side_by_side, worker_threads()));
+  // each place in a batch keeps its surface's solvers for the next batch
+  PlacementSurfaces surfaces(width);
   bool found = false;
   // whether some placement's quads were sound, and whether one of those had
   // size_band_goal of them in the size band
@@ -561,12 +572,13 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
     const std::size_t count = std::min({width, placements.size() - start, static_cast<std::size_t>(attempts_left)});
     std::vector<ConeAttempt> attempts;
     if (count == 1) {  // on this thread, its progress as it goes
-      attempts.push_back(run_attempt(setup, placements[start], stages, lattice_factor, options.smoothing, &placed));
+      attempts.push_back(
+          run_attempt(setup, placements[start], stages, lattice_factor, options.smoothing, &placed, &surfaces[0]));
     } else {
       const std::vector<ConePlacementOptions> batch(placements.begin() + static_cast<std::ptrdiff_t>(start),
                                                     placements.begin() + static_cast<std::ptrdiff_t>(start + count));
       stages.announce(fmt::format("trying {} cone placements side by side", count));
-      attempts = cone_attempts_side_by_side(setup, batch, lattice_factor, options.smoothing);
+      attempts = cone_attempts_side_by_side(setup, batch, lattice_factor, options.smoothing, &surfaces);
     }
     std::size_t consumed = 0;  // the attempts taken in order (the rest dropped)
     for (ConeAttempt& attempt : attempts) {

@@ -4,6 +4,7 @@
 // size band; kept when it is sound and keeps more quads in the band.
 #pragma once
 
+#include "libquadmesh/cones/cone_metric.h"
 #include "libquadmesh/cones/cone_placement.h"
 #include "libquadmesh/pipeline/internal/candidate_ranking.h"
 #include "libquadmesh/pipeline/internal/form_setup.h"
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -66,12 +68,31 @@ FormSetup turned_boundary_setup(const FormSetup& setup);
 /// How many placements the route tries at a time when the threads allow.
 constexpr std::size_t placements_side_by_side = 2;
 
+/// What every placement on one soup solves alike: its adjacency and its cone
+/// metric's factor, with the metrics already solved (ConeMetricSolver remembers
+/// them). Made by the first placement that needs it, kept for the next ones of one
+/// search; one placement uses it at a time. The solves give the same bits as a
+/// solver made afresh (the square flange's eleven placements: the factor once).
+struct PlacementSurface {
+  explicit PlacementSurface(const TriangleSoup& soup);
+  PlacementSurface(const PlacementSurface&) = delete;
+  PlacementSurface& operator=(const PlacementSurface&) = delete;
+  SurfaceAdjacency adjacency;
+  ConeMetricSolver metrics;  ///< on the soup and `adjacency`
+};
+
+/// One PlacementSurface per attempt run side by side, made when first needed.
+using PlacementSurfaces = std::vector<std::unique_ptr<PlacementSurface>>;
+
 /// cone_attempt for each placement, side by side on the worker threads, without
 /// the check against placements tried before (the caller's, in order). A result
-/// does not depend on the threads: each attempt is computed on its own.
+/// does not depend on the threads: each attempt is computed on its own. With
+/// `surfaces`, the i-th placement uses (*surfaces)[i] (made if empty; the vector
+/// grown to the placements' count).
 std::vector<ConeAttempt> cone_attempts_side_by_side(const FormSetup& setup,
                                                     const std::vector<ConePlacementOptions>& placements,
-                                                    double lattice_factor, bool smooth_inverted);
+                                                    double lattice_factor, bool smooth_inverted,
+                                                    PlacementSurfaces* surfaces = nullptr);
 
 /// The cone placements the route tries in turn, until one gives sound quads: the
 /// defaults, then without the valence-3/5 pairs that even the sizes (more cones,
