@@ -935,7 +935,7 @@ std::vector<Cone> place_cones(const ConeMetricSolver& solver, double size, const
     add_cone_pairs(soup, adjacency, solver, curvature, area, eligible, spacing, boundary_room(), size, tip_size, settle,
                    options, static_cast<int>(allowed) - interior, pinned, cones);
   }
-  if (options.min_metric_band > 0 || options.max_metric_largest > 0) {
+  if (options.min_metric_band > 0 || options.mapped_metric_band > 0 || options.max_metric_largest > 0) {
     std::vector<char> placed(area.size(), 0);
     for (const Cone& c : cones) placed[static_cast<std::size_t>(c.vertex)] = 1;
     const Eigen::VectorXd u =
@@ -957,6 +957,11 @@ std::vector<Cone> place_cones(const ConeMetricSolver& solver, double size, const
                                  refusal + " (a protrusion's cap lacks its cones)");
       throw Error(ErrorCode::unsupported, refusal);
     }
+    if (band.share < options.mapped_metric_band)
+      throw Error(ErrorCode::unsupported,
+                  fmt::format("the {} cones leave {:.0f}% of the area with quads within [0.5, 2] x the size: not "
+                              "mapped (their quads would miss the band)",
+                              cones.size(), 100 * band.share));
   }
   return cones;
 }

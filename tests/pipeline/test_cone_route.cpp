@@ -222,10 +222,12 @@ TEST_CASE("a placement whose map folds with the cones rounded first is sound wit
 TEST_CASE("a cone route none of whose greedy placements is sound maps each placement once, its cones rounded first" *
           doctest::test_suite("slow")) {
   // the Z-plate's holes crowd its arms: the one greedy placement that gets as far
-  // as its map folds (129 folded triangles, two boundary loops lost), mapped once;
-  // the cross field's singularities (held to the corners' counts) are mapped after
-  // it and kept. Mapping every placement again with the translations rounded first
-  // cost a second map and made no input sound (its scans' maps lost their topology)
+  // as its map folded (129 folded triangles, two boundary loops lost) and is no
+  // longer mapped (its metric leaves 79% of the area with quads in the size band:
+  // ConePlacementOptions::mapped_metric_band); the cross field's singularities (held
+  // to the corners' counts) are mapped once and kept. Mapping every placement
+  // again with the translations rounded first cost a second map and made no input
+  // sound (its scans' maps lost their topology)
   TriangleSoup input;
   std::vector<std::string> messages;
   const QuadMeshResult r = mesh_cad_part(test::example("parts/z-plate-holes.geo"), input,
@@ -234,7 +236,7 @@ TEST_CASE("a cone route none of whose greedy placements is sound maps each place
   const auto maps = std::count_if(messages.begin(), messages.end(), [](const std::string& m) {
     return m.find("the seamless map with") != std::string::npos;
   });
-  CHECK(maps == 2);
+  CHECK(maps == 1);
 }
 
 TEST_CASE("the cones steer the field's turn round fertility's handles" * doctest::test_suite("slow")) {
