@@ -99,30 +99,31 @@ class ConeCrowding {
  public:
   ConeCrowding(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, int separation, double min_distance)
       : soup_(soup), adjacency_(adjacency), separation_(separation), min_distance_(min_distance),
-        stamp_(soup.points.size(), 0) {}
+        stamp_(soup.points.size(), 0), other_(soup.points.size(), 0) {}
 
   bool near_other(const std::vector<Cone>& cones, std::size_t moving, int v) {
-    std::vector<int> others;
-    for (std::size_t j = 0; j < cones.size(); ++j)
-      if (j != moving && !adjacency_.boundary_vertex[static_cast<std::size_t>(cones[j].vertex)])
-        others.push_back(cones[j].vertex);
-    if (others.empty()) return false;
+    ++walk_;  // this call's marks: the other cones' vertices, then the walk's
+    bool any = false;
     const Vec3& at = soup_.points[static_cast<std::size_t>(v)];
-    for (int o : others)
-      if ((soup_.points[static_cast<std::size_t>(o)] - at).squaredNorm() < min_distance_ * min_distance_) return true;
-    std::sort(others.begin(), others.end());
-    ++walk_;
-    std::vector<std::pair<int, int>> queue{{v, 0}};
+    for (std::size_t j = 0; j < cones.size(); ++j) {
+      const auto o = static_cast<std::size_t>(cones[j].vertex);
+      if (j == moving || adjacency_.boundary_vertex[o]) continue;
+      if ((soup_.points[o] - at).squaredNorm() < min_distance_ * min_distance_) return true;
+      other_[o] = walk_;
+      any = true;
+    }
+    if (!any) return false;
+    queue_.assign(1, {v, 0});
     stamp_[static_cast<std::size_t>(v)] = walk_;
-    for (std::size_t next = 0; next < queue.size(); ++next) {
-      const auto [w, depth] = queue[next];
-      if (std::binary_search(others.begin(), others.end(), w)) return true;
+    for (std::size_t next = 0; next < queue_.size(); ++next) {
+      const auto [w, depth] = queue_[next];
+      if (other_[static_cast<std::size_t>(w)] == walk_) return true;
       if (depth == separation_) continue;
       for (int f : adjacency_.vertex_faces[static_cast<std::size_t>(w)])
         for (int x : soup_.triangles[static_cast<std::size_t>(f)])
           if (stamp_[static_cast<std::size_t>(x)] != walk_) {
             stamp_[static_cast<std::size_t>(x)] = walk_;
-            queue.push_back({x, depth + 1});
+            queue_.push_back({x, depth + 1});
           }
     }
     return false;
@@ -133,7 +134,9 @@ class ConeCrowding {
   const SurfaceAdjacency& adjacency_;
   int separation_;
   double min_distance_;
-  std::vector<unsigned> stamp_;  ///< the walk that last reached each vertex
+  std::vector<unsigned> stamp_;  ///< the call that last reached each vertex
+  std::vector<unsigned> other_;  ///< the call that last marked each vertex another cone's
+  std::vector<std::pair<int, int>> queue_;  ///< the walk's vertices and depths
   unsigned walk_ = 0;
 };
 

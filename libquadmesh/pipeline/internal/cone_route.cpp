@@ -308,7 +308,8 @@ FormSetup turned_boundary_setup(const FormSetup& setup) {
   return out;
 }
 
-PlacementSurface::PlacementSurface(const TriangleSoup& soup) : adjacency(surface_adjacency(soup)), metrics(soup, adjacency) {}
+PlacementSurface::PlacementSurface(const TriangleSoup& soup)
+    : adjacency(surface_adjacency(soup)), metrics(soup, adjacency) {}
 
 std::vector<ConeAttempt> cone_attempts_side_by_side(const FormSetup& setup,
                                                     const std::vector<ConePlacementOptions>& placements,
