@@ -948,12 +948,13 @@ std::vector<Cone> place_cones(const ConeMetricSolver& solver, double size, const
     const double largest = options.max_metric_largest > 0
                                ? quad_scale_largest(soup, adjacency, u, area, placed, band.mean, 0.5 * size)
                                : band.largest;
+    const auto leave = [&] {
+      return fmt::format("the {} cones leave {:.0f}% of the area with quads within [0.5, 2] x the size", cones.size(),
+                         100 * band.share);
+    };
     if (band.share < options.min_metric_band ||
         (options.max_metric_largest > 0 && largest > options.max_metric_largest)) {
-      const std::string refusal =
-          fmt::format("the {} cones leave {:.0f}% of the area with quads within [0.5, 2] x the size (up to {:.0f} x): "
-                      "not mapped",
-                      cones.size(), 100 * band.share, largest);
+      const std::string refusal = leave() + fmt::format(" (up to {:.0f} x): not mapped", largest);
       if (!options.protrusion_caps && greedy &&
           uncapped_protrusion(soup, adjacency, curvature, u, band, placed, options, cones))
         throw UncappedProtrusion(ErrorCode::unsupported,
@@ -961,10 +962,7 @@ std::vector<Cone> place_cones(const ConeMetricSolver& solver, double size, const
       throw Error(ErrorCode::unsupported, refusal);
     }
     if (band.share < options.mapped_metric_band)
-      throw Error(ErrorCode::unsupported,
-                  fmt::format("the {} cones leave {:.0f}% of the area with quads within [0.5, 2] x the size: not "
-                              "mapped (their quads would miss the band)",
-                              cones.size(), 100 * band.share));
+      throw Error(ErrorCode::unsupported, leave() + ": not mapped (their quads would miss the band)");
   }
   return cones;
 }

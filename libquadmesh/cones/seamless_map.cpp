@@ -314,17 +314,16 @@ class PenaltySolver {
       b[v] += penalty_weight * value;
     }
     if (!analysed_) {
+      std::unique_lock<std::mutex> lock(metis_mutex, std::defer_lock);
       if (nested_dissection_) {
         solver_.cholmod().nmethods = 1;
         solver_.cholmod().method[0].ordering = CHOLMOD_METIS;
         // METIS draws from one random state for the whole process, seeded at
         // each call: two calls at once (placements side by side) would order
         // differently from one at a time
-        const std::lock_guard<std::mutex> lock(metis_mutex);
-        solver_.analyzePattern(H);
-      } else {
-        solver_.analyzePattern(H);
+        lock.lock();
       }
+      solver_.analyzePattern(H);
       analysed_ = true;
     }
     solver_.factorize(H);
