@@ -309,6 +309,20 @@ TEST_CASE("cone placements tried side by side give what each gives alone, bit fo
   }
   CHECK(side_by_side[2].error.find("no inner vertex is 1000 quads from the boundary") == 0);
   CHECK(!side_by_side[2].candidate);
+
+  // a batch after this one, given the cones placed so far, stops each attempt
+  // whose cones are among them before its map (no seamless map, no quads), as one
+  // placement at a time does; the caller's check in order names it
+  const std::vector<std::vector<Cone>> placed = {*side_by_side[0].cones};
+  PlacementSurfaces surfaces;
+  const std::vector<ConeAttempt> again =
+      cone_attempts_side_by_side(setup, {placements[0]}, 1.0, true, &surfaces, &placed);
+  REQUIRE(again.size() == 1);
+  REQUIRE(again[0].cones);
+  CHECK(again[0].cones->size() == side_by_side[0].cones->size());
+  CHECK(!again[0].candidate);
+  CHECK(again[0].error.empty());
+  CHECK(again[0].messages.size() == 1);  // placing only
 }
 
 TEST_CASE("a hole little wider than a quad in a strip: the last placement brings its cones near, the quads stay in "

@@ -314,7 +314,8 @@ PlacementSurface::PlacementSurface(const TriangleSoup& soup)
 std::vector<ConeAttempt> cone_attempts_side_by_side(const FormSetup& setup,
                                                     const std::vector<ConePlacementOptions>& placements,
                                                     double lattice_factor, bool smooth_inverted,
-                                                    PlacementSurfaces* surfaces) {
+                                                    PlacementSurfaces* surfaces,
+                                                    const std::vector<std::vector<Cone>>* placed) {
   std::vector<ConeAttempt> out(placements.size());
   if (surfaces && surfaces->size() < placements.size()) surfaces->resize(placements.size());
   parallel_for_index(placements.size(), [&](std::size_t i) {
@@ -322,7 +323,7 @@ std::vector<ConeAttempt> cone_attempts_side_by_side(const FormSetup& setup,
     std::vector<std::pair<std::string, double>> timings;
     const ProgressCallback record = [&messages](const std::string& message) { messages.push_back(message); };
     Stages stages(timings, record);
-    out[i] = run_attempt(setup, placements[i], stages, lattice_factor, smooth_inverted, nullptr,
+    out[i] = run_attempt(setup, placements[i], stages, lattice_factor, smooth_inverted, placed,
                          surfaces ? &(*surfaces)[i] : nullptr);
     stages.close();
     out[i].messages = std::move(messages);
@@ -579,7 +580,8 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
       const std::vector<ConePlacementOptions> batch(placements.begin() + static_cast<std::ptrdiff_t>(start),
                                                     placements.begin() + static_cast<std::ptrdiff_t>(start + count));
       stages.announce(fmt::format("trying {} cone placements side by side", count));
-      attempts = cone_attempts_side_by_side(setup, batch, lattice_factor, options.smoothing, &surfaces);
+      // checked against the batches before it (`placed` grows only below, in order)
+      attempts = cone_attempts_side_by_side(setup, batch, lattice_factor, options.smoothing, &surfaces, &placed);
     }
     std::size_t consumed = 0;  // the attempts taken in order (the rest dropped)
     for (ConeAttempt& attempt : attempts) {

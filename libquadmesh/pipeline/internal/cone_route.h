@@ -84,15 +84,18 @@ struct PlacementSurface {
 /// One PlacementSurface per attempt run side by side, made when first needed.
 using PlacementSurfaces = std::vector<std::unique_ptr<PlacementSurface>>;
 
-/// cone_attempt for each placement, side by side on the worker threads, without
-/// the check against placements tried before (the caller's, in order). A result
-/// does not depend on the threads: each attempt is computed on its own. With
-/// `surfaces`, the i-th placement uses (*surfaces)[i] (made if empty; the vector
-/// grown to the placements' count).
+/// cone_attempt for each placement, side by side on the worker threads. With
+/// `placed` (the cone sets of the batches before this one), an attempt whose cones
+/// are one of them stops before its map, as one at a time would; a set the same as
+/// an earlier attempt's in this batch is mapped, and left to the caller's check in
+/// order. A result does not depend on the threads: each attempt is computed on its
+/// own. With `surfaces`, the i-th placement uses (*surfaces)[i] (made if empty; the
+/// vector grown to the placements' count).
 std::vector<ConeAttempt> cone_attempts_side_by_side(const FormSetup& setup,
                                                     const std::vector<ConePlacementOptions>& placements,
                                                     double lattice_factor, bool smooth_inverted,
-                                                    PlacementSurfaces* surfaces = nullptr);
+                                                    PlacementSurfaces* surfaces = nullptr,
+                                                    const std::vector<std::vector<Cone>>* placed = nullptr);
 
 /// The cone placements the route tries in turn, until one gives sound quads: the
 /// defaults, then without the valence-3/5 pairs that even the sizes (more cones,
