@@ -50,31 +50,37 @@ std::vector<double> distance_to_boundary(const TriangleSoup& soup, const Surface
   return distance_from(soup, adjacency, boundary);
 }
 
-/// Vertices within `rings` edges of a vertex (itself first, then breadth first),
-/// walked with marks kept across calls: a walk costs the vertices it reaches, not
-/// the surface's (the alignment walks thousands of times on one placement).
-class RingNeighbourhood {
+/// Breadth-first walks of the edge rings round a vertex, with marks kept across
+/// walks: a walk costs the vertices it reaches, not the surface's (the alignment
+/// walks thousands of times on one placement).
+class RingWalk {
  public:
-  RingNeighbourhood(const TriangleSoup& soup, const SurfaceAdjacency& adjacency)
+  RingWalk(const TriangleSoup& soup, const SurfaceAdjacency& adjacency)
       : soup_(soup), adjacency_(adjacency), stamp_(soup.points.size(), 0), depth_(soup.points.size(), 0) {}
 
-  const std::vector<int>& around(int v, int rings) {
+  /// Walks the vertices within `rings` edges of v (itself first), and stops at the
+  /// first w for which stop(w) holds: true then. reached() has the vertices walked.
+  template <class Stop>
+  bool walk(int v, int rings, const Stop& stop) {
     ++walk_;
-    out_.assign(1, v);
+    reached_.assign(1, v);
     mark(v, 0);
-    for (std::size_t next = 0; next < out_.size(); ++next) {
-      const int w = out_[next];
+    for (std::size_t next = 0; next < reached_.size(); ++next) {
+      const int w = reached_[next];
+      if (stop(w)) return true;
       const int d = depth_[static_cast<std::size_t>(w)];
       if (d == rings) continue;
       for (int f : adjacency_.vertex_faces[static_cast<std::size_t>(w)])
         for (int x : soup_.triangles[static_cast<std::size_t>(f)])
           if (stamp_[static_cast<std::size_t>(x)] != walk_) {
             mark(x, d + 1);
-            out_.push_back(x);
+            reached_.push_back(x);
           }
     }
-    return out_;
+    return false;
   }
+
+  const std::vector<int>& reached() const { return reached_; }
 
  private:
   void mark(int v, int depth) {
@@ -86,8 +92,22 @@ class RingNeighbourhood {
   const SurfaceAdjacency& adjacency_;
   std::vector<unsigned> stamp_;  ///< the walk that last reached each vertex
   std::vector<int> depth_;       ///< its depth in that walk
-  std::vector<int> out_;
+  std::vector<int> reached_;
   unsigned walk_ = 0;
+};
+
+/// Vertices within `rings` edges of a vertex: itself first, then breadth first.
+class RingNeighbourhood {
+ public:
+  RingNeighbourhood(const TriangleSoup& soup, const SurfaceAdjacency& adjacency) : rings_(soup, adjacency) {}
+
+  const std::vector<int>& around(int v, int rings) {
+    rings_.walk(v, rings, [](int) { return false; });
+    return rings_.reached();
+  }
+
+ private:
+  RingWalk rings_;
 };
 
 /// Whether a vertex lies within `separation` edges of an interior cone other than
@@ -99,34 +119,20 @@ class ConeCrowding {
  public:
   ConeCrowding(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, int separation, double min_distance)
       : soup_(soup), adjacency_(adjacency), separation_(separation), min_distance_(min_distance),
-        stamp_(soup.points.size(), 0), other_(soup.points.size(), 0) {}
+        rings_(soup, adjacency), other_(soup.points.size(), 0) {}
 
   bool near_other(const std::vector<Cone>& cones, std::size_t moving, int v) {
-    ++walk_;  // this call's marks: the other cones' vertices, then the walk's
+    ++call_;  // this call's marks: the other cones' vertices
     bool any = false;
     const Vec3& at = soup_.points[static_cast<std::size_t>(v)];
     for (std::size_t j = 0; j < cones.size(); ++j) {
       const auto o = static_cast<std::size_t>(cones[j].vertex);
       if (j == moving || adjacency_.boundary_vertex[o]) continue;
       if ((soup_.points[o] - at).squaredNorm() < min_distance_ * min_distance_) return true;
-      other_[o] = walk_;
+      other_[o] = call_;
       any = true;
     }
-    if (!any) return false;
-    queue_.assign(1, {v, 0});
-    stamp_[static_cast<std::size_t>(v)] = walk_;
-    for (std::size_t next = 0; next < queue_.size(); ++next) {
-      const auto [w, depth] = queue_[next];
-      if (other_[static_cast<std::size_t>(w)] == walk_) return true;
-      if (depth == separation_) continue;
-      for (int f : adjacency_.vertex_faces[static_cast<std::size_t>(w)])
-        for (int x : soup_.triangles[static_cast<std::size_t>(f)])
-          if (stamp_[static_cast<std::size_t>(x)] != walk_) {
-            stamp_[static_cast<std::size_t>(x)] = walk_;
-            queue_.push_back({x, depth + 1});
-          }
-    }
-    return false;
+    return any && rings_.walk(v, separation_, [&](int w) { return other_[static_cast<std::size_t>(w)] == call_; });
   }
 
  private:
@@ -134,10 +140,9 @@ class ConeCrowding {
   const SurfaceAdjacency& adjacency_;
   int separation_;
   double min_distance_;
-  std::vector<unsigned> stamp_;  ///< the call that last reached each vertex
+  RingWalk rings_;
   std::vector<unsigned> other_;  ///< the call that last marked each vertex another cone's
-  std::vector<std::pair<int, int>> queue_;  ///< the walk's vertices and depths
-  unsigned walk_ = 0;
+  unsigned call_ = 0;
 };
 
 /// Moves interior cones, one at a time, to where the field meets every boundary
