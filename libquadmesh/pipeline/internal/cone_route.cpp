@@ -378,7 +378,6 @@ namespace {
 /// point.
 std::size_t corner_mismatches(const QuadMeshResult& r) {
   const TriangleSoup& soup = r.surface;
-  const SurfaceAdjacency adjacency = surface_adjacency(soup);
   std::vector<int> quads_at(r.quads.points.size(), 0);
   for (const auto& quad : r.quads.quads)
     for (int v : quad) ++quads_at[static_cast<std::size_t>(v)];
