@@ -61,12 +61,20 @@ RetryPolicy::Inputs retry_inputs(const FormSetup& setup, const QuadMeshOptions& 
 QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, const ProgressCallback& progress) {
   std::vector<std::pair<std::string, double>> timings;
   Stages stages(timings, progress);
-  FormSetup setup = prepare_forms(std::move(soup), options, stages);
+  FormSetup setup = prepare_surface(std::move(soup), options, stages);
   const SurfaceTopology input = topology_of(setup.soup);
-  const int basis_count = static_cast<int>(setup.basis.size());
+  // the forms first where the cone route does not come first, or where the options
+  // name a form (checked against the surface before any work)
+  const bool form_asked = !options.coefficients.empty() || options.form >= 0;
+  if (form_asked || !cones_first(setup.soup, setup.preamble.size_requested, options))
+    compute_forms(setup, options, stages);
 
-  // auto on a surface with CAD corners: the cone route first (cone_route.h)
+  // auto on a surface with CAD corners: the cone route first (cone_route.h), the
+  // forms only when its quads are not kept
   ConesFirst first = try_cones_first(setup, options, input, stages);
+  // remeshed for the forms: the cones again on the surface the Abel quads will be on
+  if (!first.kept && !setup.forms_computed && compute_forms(setup, options, stages))
+    first = try_cones_first(setup, options, input, stages);
   const bool cones_tried_first = first.tried.has_value() || !first.failure.empty();
   Candidate best;
   ConeRouteOutcome cones;
@@ -74,6 +82,7 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
   if (first.kept) {
     best = std::move(*first.kept);
   } else {
+    const int basis_count = static_cast<int>(setup.basis.size());
     choose_form(setup, options, stages);
     // attempts as the retry policy orders them, the best kept (candidate_ranking.h)
     RetryPolicy retries(retry_inputs(setup, options));
@@ -99,6 +108,11 @@ QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, 
   keep_nearer_cones(best, cones, options, input, stages);
   split_abel_quads_above_band(best, options, input, stages);
   QuadMeshResult result = std::move(best.result);
+  // the forms' figures, where they were computed after the cones' quads were made
+  result.doubled_genus = setup.preamble.doubled_genus;
+  result.residuals = setup.preamble.residuals;
+  result.remeshed = setup.preamble.remeshed;
+  result.input_hodge_star_squared = setup.preamble.input_hodge_star_squared;
   improve_quads(result, options, stages);
   prefer_field_cones(result, setup, options, input, stages);
   prefer_cones_to_written_abel(result, cones_tried_first || !cones.failure.empty(), setup, options, input, stages);

@@ -99,9 +99,11 @@ struct QuadMeshResult {
   LatticeQuads quads;            ///< the quad mesh (unreferenced points removed)
   std::vector<int> boundary_loop_of_point;  ///< per quad point: the input boundary loop it lies on, or -1
   int doubled_genus = 0;
-  FormsResiduals residuals;      ///< of the forms used
+  /// Of the forms used; NaN where none were computed (auto's cone quads kept
+  /// before any form: a surface with corners at the quad size).
+  FormsResiduals residuals;
   bool remeshed = false;         ///< the input was remeshed first
-  double input_hodge_star_squared = 0;  ///< ||Lambda^2 + I|| on the input triangulation
+  double input_hodge_star_squared = 0;  ///< ||Lambda^2 + I|| on the input triangulation (NaN: no forms computed)
   Eigen::VectorXd coefficients;  ///< h = sum c_k h_k (unit vector), before rotation
   std::size_t boundary_tips = 0;  ///< boundary tips the auto form was asked to vanish at (tip_angle_deg)
   int form_attempts = 1;         ///< forms tried (auto tries the basis forms while folds, dropped cells or a wrong topology are left)

@@ -325,6 +325,34 @@ TEST_CASE("cone placements tried side by side give what each gives alone, bit fo
   CHECK(again[0].messages.size() == 1);  // placing only
 }
 
+TEST_CASE("a cone route kept first needs no forms: the same quads on the surface before them") {
+  // the plate with two holes has corners at the quad size, so auto tries the cones
+  // first and keeps them: mesh_quads then never computes the forms (the Abel route's)
+  QuadMeshOptions options;
+  options.size_relative = 0.015;
+  io::ReadOptions read;
+  read.quad_size_relative = options.size_relative;
+  const TriangleSoup soup = analyze_topology(io::read_surface(test::example("plate-two-holes.geo"), read).soup).soup;
+  std::vector<std::pair<std::string, double>> timings;
+  Stages stages(timings, {});
+  const FormSetup formed = prepare_forms(soup, options, stages);
+  const FormSetup bare = prepare_surface(soup, options, stages);
+  CHECK(formed.forms_computed);
+  CHECK(!bare.forms_computed);
+  CHECK(bare.basis.empty());
+  CHECK(bare.soup.points == formed.soup.points);
+  CHECK(bare.soup.triangles == formed.soup.triangles);
+  CHECK(bare.preamble.doubled_genus == formed.preamble.doubled_genus);
+  CHECK(std::isnan(bare.preamble.residuals.hodge_star_squared));
+  const SurfaceTopology input = topology_of(soup);
+  ConesFirst with_forms = try_cones_first(formed, options, input, stages);
+  ConesFirst without = try_cones_first(bare, options, input, stages);
+  REQUIRE(with_forms.kept);
+  REQUIRE(without.kept);
+  CHECK(without.kept->result.quads.quads == with_forms.kept->result.quads.quads);
+  CHECK(without.kept->result.quads.points == with_forms.kept->result.quads.points);
+}
+
 TEST_CASE("a hole little wider than a quad in a strip: the last placement brings its cones near, the quads stay in "
           "the band" * doctest::test_suite("slow")) {
   // a 140 x 14 strip with a hole of radius 3 at 1.5% of the diagonal (2.1 per quad):

@@ -25,6 +25,7 @@ struct FormSetup {
   QuadMeshResult preamble;
   /// Auto's form without the zeros at the boundary tips, when it has some (else empty).
   Eigen::VectorXd free_coefficients;
+  bool forms_computed = false;    ///< `basis` and `loops` are set (form_setup.h compute_forms)
 };
 
 /// The loops of H_1(S) whose periods the quantization rounds (forms/named_loops.h).

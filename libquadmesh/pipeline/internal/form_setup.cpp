@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace qm {
 
@@ -61,6 +62,20 @@ void asked_coefficients(const QuadMeshOptions& options, FormSetup& setup) {
   }
 }
 
+/// Remeshes `soup` isotropically for the forms (QuadMeshOptions::remesh_size, or
+/// the smaller of remesh_mean_edge_fraction x its mean edge and a
+/// remesh_quads_per_edge-th of r.size_requested); notes it in `r`.
+void remesh_for_forms(TriangleSoup& soup, const QuadMeshOptions& options, Stages& stages, QuadMeshResult& r) {
+  RemeshOptions remesh_options;
+  remesh_options.target_edge_length =
+      options.remesh_size > 0 ? options.remesh_size
+                              : std::min(remesh_mean_edge_fraction * mean_edge_length(soup),
+                                         r.size_requested / remesh_quads_per_edge);
+  stages.next("remeshing", fmt::format("remeshing isotropically (edge length {:.4g})", remesh_options.target_edge_length));
+  soup = remesh_isotropic(soup, remesh_options);
+  r.remeshed = true;
+}
+
 }  // namespace
 
 RequestedSize requested_size(const TriangleSoup& soup, const QuadMeshOptions& options) {
@@ -90,31 +105,33 @@ void require_within_work_limit(const TriangleSoup& soup, const QuadMeshOptions& 
               "QuadMeshOptions::max_quads");
 }
 
-FormSetup prepare_forms(TriangleSoup soup, const QuadMeshOptions& options, Stages& stages) {
+FormSetup prepare_surface(TriangleSoup soup, const QuadMeshOptions& options, Stages& stages) {
   FormSetup setup;
   QuadMeshResult& r = setup.preamble;
   setup.area = surface_area(soup);
   setup.diagonal = bounding_box_diagonal(soup.points, soup.triangles);
-  const RequestedSize requested = requested_size(soup, options);
-  r.size_requested = requested.edge;  // with a quad count, the edge of a square of area / quads
-  auto remesh = [&](TriangleSoup& s) {
-    RemeshOptions remesh_options;
-    remesh_options.target_edge_length =
-        options.remesh_size > 0
-            ? options.remesh_size
-            : std::min(remesh_mean_edge_fraction * mean_edge_length(s), requested.edge / remesh_quads_per_edge);
-    stages.next("remeshing", fmt::format("remeshing isotropically (edge length {:.4g})",
-                                         remesh_options.target_edge_length));
-    s = remesh_isotropic(s, remesh_options);
-    r.remeshed = true;
-  };
-  if (options.remesh == RemeshPolicy::always) remesh(soup);
-  stages.next("forms", "computing symmetric holomorphic forms");
+  r.size_requested = requested_size(soup, options).edge;  // with a quad count, the edge of a square of area / quads
+  if (options.remesh == RemeshPolicy::always) remesh_for_forms(soup, options, stages, r);
   r.chords_split = split_boundary_chords(soup);
+  // with boundary, the doubled surface's genus is 2g + b - 1 = 1 - chi
+  r.doubled_genus = 1 - topology_of(soup).euler_characteristic;
+  const double not_computed = std::numeric_limits<double>::quiet_NaN();
+  r.residuals = FormsResiduals{not_computed, not_computed, not_computed, not_computed, not_computed};
+  r.input_hodge_star_squared = not_computed;
+  setup.soup = std::move(soup);
+  return setup;
+}
+
+bool compute_forms(FormSetup& setup, const QuadMeshOptions& options, Stages& stages) {
+  QuadMeshResult& r = setup.preamble;
+  TriangleSoup& soup = setup.soup;
+  stages.next("forms", "computing symmetric holomorphic forms");
   SymmetricForms forms = compute_symmetric_forms(to_surface_mesh(soup));
   r.input_hodge_star_squared = forms.residuals.hodge_star_squared;
-  if (options.remesh == RemeshPolicy::automatic && forms.residuals.hodge_star_squared > max_hodge_star_residual) {
-    remesh(soup);
+  const bool remeshed =
+      options.remesh == RemeshPolicy::automatic && forms.residuals.hodge_star_squared > max_hodge_star_residual;
+  if (remeshed) {
+    remesh_for_forms(soup, options, stages, r);
     stages.next("forms", fmt::format("computing the forms again (||Lambda^2 + I|| was {:.3g})",
                                       r.input_hodge_star_squared));
     r.chords_split += split_boundary_chords(soup);
@@ -123,10 +140,15 @@ FormSetup prepare_forms(TriangleSoup soup, const QuadMeshOptions& options, Stage
   r.doubled_genus = forms.doubled_genus;
   r.residuals = forms.residuals;
   setup.basis = symmetric_face_maps(forms, soup);
-  setup.soup = std::move(soup);
-
   asked_coefficients(options, setup);
-  setup.loops = period_loops(setup.soup);  // of S before any cone star is refined
+  setup.loops = period_loops(soup);  // of S before any cone star is refined
+  setup.forms_computed = true;
+  return remeshed;
+}
+
+FormSetup prepare_forms(TriangleSoup soup, const QuadMeshOptions& options, Stages& stages) {
+  FormSetup setup = prepare_surface(std::move(soup), options, stages);
+  compute_forms(setup, options, stages);
   return setup;
 }
 

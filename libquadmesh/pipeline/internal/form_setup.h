@@ -25,10 +25,22 @@ RequestedSize requested_size(const TriangleSoup& soup, const QuadMeshOptions& op
 /// imply more quads than it allows (implied_quad_count, mesh_quads.h).
 void require_within_work_limit(const TriangleSoup& soup, const QuadMeshOptions& options);
 
-/// Remeshes when asked (RemeshPolicy), computes the symmetric forms and sets the
-/// coefficients of h the options ask for (QuadMeshOptions::coefficients, ::form);
-/// auto's are chosen by choose_form. Throws qm::Error(bad_input) naming the
-/// option when coefficients or form do not fit the surface.
+/// The surface before any form: its area, diagonal and requested size, remeshed
+/// first when asked (RemeshPolicy::always), its boundary chords split, and the
+/// doubled surface's genus (1 - chi); the forms' residuals NaN (not computed).
+/// What the cone route needs: a cone route kept first never computes the forms
+/// (bunny-open: 1.8 s of its 13).
+FormSetup prepare_surface(TriangleSoup soup, const QuadMeshOptions& options, Stages& stages);
+
+/// The symmetric forms on setup.soup, remeshed first when the input's forms are
+/// inaccurate (RemeshPolicy::automatic), the loops the quantization rounds, and
+/// the coefficients of h the options ask for (QuadMeshOptions::coefficients,
+/// ::form); auto's are chosen by choose_form. Returns whether it remeshed (the
+/// soup is then another). Throws qm::Error(bad_input) naming the option when
+/// coefficients or form do not fit the surface.
+bool compute_forms(FormSetup& setup, const QuadMeshOptions& options, Stages& stages);
+
+/// prepare_surface, then compute_forms.
 FormSetup prepare_forms(TriangleSoup soup, const QuadMeshOptions& options, Stages& stages);
 
 /// Auto's coefficients of h, where prepare_forms set none: the most uniform form,
