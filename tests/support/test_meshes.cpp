@@ -3,11 +3,13 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <mutex>
 #include <set>
 
 namespace qm::test {
@@ -19,6 +21,38 @@ constexpr double kPi = 3.14159265358979323846;
 std::string shared_mesh(const std::string& name) { return std::string(QM_DATA_DIR) + "/" + name; }
 std::string example(const std::string& name) { return std::string(QM_EXAMPLES_DIR) + "/" + name; }
 
+namespace {
+
+/// The scratch folders this test process made, removed when it exits (kept when
+/// QUADMESH_KEEP_TEST_FILES is set, to look at a failure's files). Only by the
+/// process that made them: a forked child that exits leaves them.
+class ScratchFolders {
+ public:
+  void add(const std::filesystem::path& dir) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    dirs_.push_back(dir);
+  }
+  ~ScratchFolders() {
+    if (::getpid() != owner_ || std::getenv("QUADMESH_KEEP_TEST_FILES") != nullptr) return;
+    for (const std::filesystem::path& dir : dirs_) {
+      std::error_code ignored;
+      std::filesystem::remove_all(dir, ignored);
+    }
+  }
+
+ private:
+  const pid_t owner_ = ::getpid();
+  std::mutex mutex_;
+  std::vector<std::filesystem::path> dirs_;
+};
+
+ScratchFolders& scratch_folders() {
+  static ScratchFolders folders;
+  return folders;
+}
+
+}  // namespace
+
 std::string scratch_dir(const std::string& test_name) {
   namespace fs = std::filesystem;
   // the process id keeps two test runs at once (two checkouts, ctest -j) apart
@@ -26,6 +60,7 @@ std::string scratch_dir(const std::string& test_name) {
       fs::temp_directory_path() / ("quadmesh-test-" + std::to_string(::getpid()) + "-" + test_name);
   fs::remove_all(dir);
   fs::create_directories(dir);
+  scratch_folders().add(dir);
   return dir.string();
 }
 

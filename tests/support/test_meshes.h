@@ -14,7 +14,8 @@ namespace qm::test {
 std::string shared_mesh(const std::string& name);
 std::string example(const std::string& name);
 /// A fresh empty folder under the system temp dir for one test (its name has the
-/// process id, so that test runs at the same time keep apart).
+/// process id, so that test runs at the same time keep apart), removed with its
+/// files when the test program exits (kept with QUADMESH_KEEP_TEST_FILES set).
 std::string scratch_dir(const std::string& test_name);
 /// Writes `text` to dir/name (a .geo written by a test); returns the path.
 std::string write_text(const std::string& dir, const std::string& name, const std::string& text);
