@@ -45,7 +45,7 @@ double ring_mean(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, co
 }  // namespace
 
 ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const std::vector<Cone>& cones,
-                 double size, RoundingOrder order) {
+                 double size, RoundingOrder order, const StopRequest& stop) {
   QM_ASSERT(size > 0 && adjacency.soup == &soup);
   ConeMap out;
   out.quads = quads_per_vertex(adjacency, cones);
@@ -80,7 +80,8 @@ ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, co
   // and the map sheared at each tip, its quad a parallelogram along the tip's
   // edges (tip_shear.h)
   const FitShape shape = tip_shear(soup, adjacency, tips, out.field, size);
-  out.map = seamless_map(soup, adjacency, scale, out.field, out.cut, out.quads, size, out.report, order, &shape);
+  out.map =
+      seamless_map(soup, adjacency, scale, out.field, out.cut, out.quads, size, out.report, order, &shape, {}, stop);
   if (out.report.inverted_triangles > 0) out.misturned = misturned_cones(soup, adjacency, out.map, out.quads);
   // a map folded round one cone it winds a turn short is quantized again from
   // chosen offsets of the lattice (the rounding then takes other integers from the
@@ -91,6 +92,7 @@ ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, co
   const std::size_t shifts = std::size(lattice_shifts);
   std::size_t next = 0;  // the offsets taken so far
   while (next < shifts && out.misturned.size() == 1) {
+    stop_if_requested(stop);  // (each offset's map runs to its end: a loop body must not throw)
     const std::size_t width = std::min(shifts - next, std::max<std::size_t>(1, worker_threads()));
     std::vector<FaceMap> maps(width);
     std::vector<SeamlessMapReport> reports(width);

@@ -26,8 +26,9 @@ struct ConeMap {
 /// Throws qm::Error: bad_input when the cones
 /// break Gauss-Bonnet or name no vertex; unsupported when a boundary loop cannot
 /// be aligned with the field (several boundary loops need cones placed for it:
-/// the placement stage); solver when a solve fails.
+/// the placement stage); solver when a solve fails. With `stop`, asked before each
+/// of its solves: Stopped (stop_request.h) when it says so.
 ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const std::vector<Cone>& cones,
-                 double size, RoundingOrder order = RoundingOrder::cones_first);
+                 double size, RoundingOrder order = RoundingOrder::cones_first, const StopRequest& stop = {});
 
 }  // namespace qm

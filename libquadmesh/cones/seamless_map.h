@@ -16,6 +16,7 @@
 
 #include "libquadmesh/cones/cut_graph.h"
 #include "libquadmesh/cones/tip_shear.h"
+#include "libquadmesh/core/stop_request.h"
 #include "libquadmesh/param/face_map.h"
 
 #include <optional>
@@ -59,10 +60,12 @@ enum class RoundingOrder { cones_first, translations_first };
 /// that brings the values made integer nearest to integers (their circular mean
 /// per axis) plus the shift: the same cones quantized from a chosen offset of the
 /// lattice (cone_map.h tries some where the map folds round a cone).
+/// With `stop`, asked before each solve: Stopped is thrown when it says so.
 /// Throws qm::Error (solver) when the system cannot be factored.
 FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u,
                      const CrossField& field, const CutGraph& cut, const std::vector<int>& quads, double size,
                      SeamlessMapReport& report, RoundingOrder order = RoundingOrder::cones_first,
-                     const FitShape* shape = nullptr, std::optional<Complex> lattice_shift = std::nullopt);
+                     const FitShape* shape = nullptr, std::optional<Complex> lattice_shift = std::nullopt,
+                     const StopRequest& stop = {});
 
 }  // namespace qm

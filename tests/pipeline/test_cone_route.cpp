@@ -987,7 +987,7 @@ TEST_CASE("bunny-open: its spike clipped and its voxel steps straight, the ears'
 
 TEST_CASE(
     "bunny-open: every placement without the caps leaves its ears' caps lacking cones, a capped "
-    "one does not" *
+    "one does not; the refusal stops the batch's attempts after it" *
     doctest::test_suite("slow")) {
   // the route's setup (its boundary chords split as for the forms, its spike
   // clipped, its turned boundary split) at 1.5% of the diagonal; no forms needed
@@ -1004,6 +1004,18 @@ TEST_CASE(
     CHECK(a.uncapped_protrusion);
     CHECK(!a.candidate);
     CHECK(a.error.find("a protrusion's cap lacks its cones") != std::string::npos);
+  }
+  // a batch that such a refusal ends stops the attempts after it at once: the
+  // capped placement beside the first plain one is placed, then stops before its
+  // map (on one thread the two run in order, so the refusal comes first)
+  {
+    const ThreadLimit one(1);
+    const std::vector<ConeAttempt> batch = cone_attempts_side_by_side(
+        setup, {plain.front(), capped_placements().front()}, 1.0, true, nullptr, nullptr, true);
+    REQUIRE(batch.size() == 2);
+    CHECK(batch[0].uncapped_protrusion);
+    CHECK(!batch[1].candidate);
+    CHECK(batch[1].error == Stopped().what());
   }
   // the caps put in: placed, and not refused (capped_min_metric_band, _largest)
   const SurfaceAdjacency adjacency = surface_adjacency(setup.soup);

@@ -23,6 +23,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <atomic>
 #include <limits>
 #include <string>
 #include <vector>
@@ -159,9 +160,10 @@ constexpr const char* placed_before_error = "the same cones as a placement tried
 
 /// The quads of `cones` (cone_attempt after the placement); `misturned`, if
 /// given, gets the interior cones a folded map winds round a turn short
-/// (cone_winding.h).
+/// (cone_winding.h). `stop`: the map's (cone_map.h).
 Candidate cone_quads(const FormSetup& setup, std::vector<Cone> cones, Stages& stages, double lattice_factor,
-                     bool smooth_inverted, RoundingOrder order, std::vector<int>* misturned = nullptr) {
+                     bool smooth_inverted, RoundingOrder order, std::vector<int>* misturned = nullptr,
+                     const StopRequest& stop = {}) {
   QuadMeshResult r = setup.preamble;
   // the corners the cone metric would open to a fold are bisected first
   TriangleSoup soup = setup.soup;
@@ -174,7 +176,7 @@ Candidate cone_quads(const FormSetup& setup, std::vector<Cone> cones, Stages& st
   for (const Cone& c : r.cones) corners += adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)];
   stages.next("cone_map", fmt::format("the seamless map with {} corner and {} interior cones", corners,
                                       static_cast<int>(r.cones.size()) - corners));
-  const ConeMap map = cone_map(soup, adjacency, r.cones, size, order);
+  const ConeMap map = cone_map(soup, adjacency, r.cones, size, order, stop);
   if (map.report.lattice_shifts > 0)
     stages.announce(fmt::format("the map folded round a cone it winds round a turn short: quantized again from "
                                 "other offsets of the lattice ({} tried), {} folded triangles left",
@@ -231,11 +233,12 @@ constexpr int max_placements_elsewhere = 2;
 /// those cones' places avoided (ConePlacementOptions::avoided_points), and the
 /// map with the fewest folds kept (bunny-open's capped cones 1.5
 /// quads from the boundary: 7 folded triangles round one valence-5 cone; placed
-/// again, 94% of the quads in the size band and nothing folded).
+/// again, 94% of the quads in the size band and nothing folded). With `stop`,
+/// asked before the map and at its solves: the attempt ends with Stopped's error.
 ConeAttempt run_attempt(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages,
                         double lattice_factor, bool smooth_inverted,
                         const std::vector<std::vector<Cone>>* placed = nullptr,
-                        std::unique_ptr<PlacementSurface>* surface = nullptr) {
+                        std::unique_ptr<PlacementSurface>* surface = nullptr, const StopRequest& stop = {}) {
   ConeAttempt attempt;
   try {
     // the metrics solved for are kept for the placement made again, which repeats
@@ -247,9 +250,10 @@ ConeAttempt run_attempt(const FormSetup& setup, const ConePlacementOptions& plac
     const ConeMetricSolver& metrics = (*surface)->metrics;
     attempt.cones = placed_cones(setup, placement, stages, lattice_factor, metrics);
     if (placed && placed_before(*attempt.cones, *placed)) return attempt;
+    stop_if_requested(stop);
     std::vector<int> misturned;
     attempt.candidate = cone_quads(setup, *attempt.cones, stages, lattice_factor, smooth_inverted, placement.rounding,
-                                   &misturned);
+                                   &misturned, stop);
     ConePlacementOptions elsewhere = placement;
     for (int again = 0; placement.place_again_where_folded && again < max_placements_elsewhere &&
                         attempt.candidate->quality.folds_left > 0 && !misturned.empty() &&
@@ -265,11 +269,13 @@ ConeAttempt run_attempt(const FormSetup& setup, const ConePlacementOptions& plac
         std::vector<Cone> cones = placed_cones(setup, elsewhere, stages, lattice_factor, metrics);
         if (placed && placed_before(cones, *placed)) break;
         Candidate candidate =
-            cone_quads(setup, cones, stages, lattice_factor, smooth_inverted, placement.rounding, &misturned);
+            cone_quads(setup, cones, stages, lattice_factor, smooth_inverted, placement.rounding, &misturned, stop);
         if (candidate.quality.folds_left < attempt.candidate->quality.folds_left) {
           attempt.cones = std::move(cones);
           attempt.candidate = std::move(candidate);
         }
+      } catch (const Stopped&) {
+        throw;
       } catch (const Error&) {
         break;  // no placement there: the folded map stands
       }
@@ -315,16 +321,25 @@ std::vector<ConeAttempt> cone_attempts_side_by_side(const FormSetup& setup,
                                                     const std::vector<ConePlacementOptions>& placements,
                                                     double lattice_factor, bool smooth_inverted,
                                                     PlacementSurfaces* surfaces,
-                                                    const std::vector<std::vector<Cone>>* placed) {
+                                                    const std::vector<std::vector<Cone>>* placed,
+                                                    bool protrusion_ends_batch) {
   std::vector<ConeAttempt> out(placements.size());
   if (surfaces && surfaces->size() < placements.size()) surfaces->resize(placements.size());
+  // the first attempt refused as an UncappedProtrusion, when that ends the batch
+  std::atomic<std::size_t> ended_at{placements.size()};
   parallel_for_index(placements.size(), [&](std::size_t i) {
     std::vector<std::string> messages;
     std::vector<std::pair<std::string, double>> timings;
     const ProgressCallback record = [&messages](const std::string& message) { messages.push_back(message); };
     Stages stages(timings, record);
+    const StopRequest stop = [&ended_at, i] { return ended_at.load() < i; };
     out[i] = run_attempt(setup, placements[i], stages, lattice_factor, smooth_inverted, placed,
-                         surfaces ? &(*surfaces)[i] : nullptr);
+                         surfaces ? &(*surfaces)[i] : nullptr, protrusion_ends_batch ? stop : StopRequest{});
+    if (protrusion_ends_batch && out[i].uncapped_protrusion) {
+      std::size_t ended = ended_at.load();
+      while (i < ended && !ended_at.compare_exchange_weak(ended, i)) {
+      }
+    }
     stages.close();
     out[i].messages = std::move(messages);
     out[i].timings = std::move(timings);
@@ -580,7 +595,11 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
                                                     placements.begin() + static_cast<std::ptrdiff_t>(start + count));
       stages.announce(fmt::format("trying {} cone placements side by side", count));
       // checked against the batches before it (`placed` grows only below, in order)
-      attempts = cone_attempts_side_by_side(setup, batch, lattice_factor, options.smoothing, &surfaces, &placed);
+      // a placement refused as an UncappedProtrusion ends the batch below while
+      // the capped placements are still to come: those beside it stop at once
+      const bool protrusion_ends_batch = interior == InteriorCones::greedy && !capped_added;
+      attempts = cone_attempts_side_by_side(setup, batch, lattice_factor, options.smoothing, &surfaces, &placed,
+                                            protrusion_ends_batch);
     }
     std::size_t consumed = 0;  // the attempts taken in order (the rest dropped)
     for (ConeAttempt& attempt : attempts) {

@@ -90,12 +90,17 @@ using PlacementSurfaces = std::vector<std::unique_ptr<PlacementSurface>>;
 /// an earlier attempt's in this batch is mapped, and left to the caller's check in
 /// order. A result does not depend on the threads: each attempt is computed on its
 /// own. With `surfaces`, the i-th placement uses (*surfaces)[i] (made if empty; the
-/// vector grown to the placements' count).
+/// vector grown to the placements' count). With `protrusion_ends_batch` (the caller
+/// drops every attempt after one refused as an UncappedProtrusion), an attempt
+/// after such a one stops at its next solve (its error Stopped's, stop_request.h):
+/// bunny-open-large's placement without pairs mapped for 6 s beside the refused
+/// first one.
 std::vector<ConeAttempt> cone_attempts_side_by_side(const FormSetup& setup,
                                                     const std::vector<ConePlacementOptions>& placements,
                                                     double lattice_factor, bool smooth_inverted,
                                                     PlacementSurfaces* surfaces = nullptr,
-                                                    const std::vector<std::vector<Cone>>* placed = nullptr);
+                                                    const std::vector<std::vector<Cone>>* placed = nullptr,
+                                                    bool protrusion_ends_batch = false);
 
 /// The cone placements the route tries in turn, until one gives sound quads: the
 /// defaults, then without the valence-3/5 pairs that even the sizes (more cones,
