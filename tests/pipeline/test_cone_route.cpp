@@ -45,6 +45,14 @@ FormSetup fertility_setup(Stages& stages) {
   return prepare_forms(std::move(soup), options, stages);
 }
 
+/// A CAD part's surface as `quadmesh mesh PATH --size P` reads it: triangulated for
+/// quads of `size_relative` of the diagonal.
+TriangleSoup read_cad_part(const std::string& path, double size_relative) {
+  io::ReadOptions read;
+  read.quad_size_relative = size_relative;
+  return analyze_topology(io::read_surface(path, read).soup).soup;
+}
+
 /// A CAD part read and meshed as `quadmesh mesh PATH --size 1.5%` does (or at
 /// `size_relative` of the diagonal), with the defaults: its surface in `input`, the
 /// quads returned, the progress to `progress`.
@@ -52,9 +60,7 @@ QuadMeshResult mesh_cad_part(const std::string& path, TriangleSoup& input, const
                              double size_relative = 0.015) {
   QuadMeshOptions options;
   options.size_relative = size_relative;
-  io::ReadOptions read;
-  read.quad_size_relative = options.size_relative;
-  input = analyze_topology(io::read_surface(path, read).soup).soup;
+  input = read_cad_part(path, size_relative);
   return mesh_quads(input, options, progress);
 }
 
@@ -279,9 +285,7 @@ TEST_CASE("cone placements tried side by side give what each gives alone, bit fo
   // placement that throws must say so in its own slot
   QuadMeshOptions options;
   options.size_relative = 0.015;
-  io::ReadOptions read;
-  read.quad_size_relative = options.size_relative;
-  const TriangleSoup soup = analyze_topology(io::read_surface(test::example("plate-two-holes.geo"), read).soup).soup;
+  const TriangleSoup soup = read_cad_part(test::example("plate-two-holes.geo"), options.size_relative);
   std::vector<std::pair<std::string, double>> timings;
   Stages stages(timings, {});
   const FormSetup setup = prepare_forms(soup, options, stages);
@@ -330,9 +334,7 @@ TEST_CASE("a cone route kept first needs no forms: the same quads on the surface
   // first and keeps them: mesh_quads then never computes the forms (the Abel route's)
   QuadMeshOptions options;
   options.size_relative = 0.015;
-  io::ReadOptions read;
-  read.quad_size_relative = options.size_relative;
-  const TriangleSoup soup = analyze_topology(io::read_surface(test::example("plate-two-holes.geo"), read).soup).soup;
+  const TriangleSoup soup = read_cad_part(test::example("plate-two-holes.geo"), options.size_relative);
   std::vector<std::pair<std::string, double>> timings;
   Stages stages(timings, {});
   const FormSetup formed = prepare_forms(soup, options, stages);
@@ -760,12 +762,9 @@ TEST_CASE("corners half-way between two counts: the field held to the corners' o
   // its singularities carry another number of quarter turns than the corners
   // leave (it was refused); its crosses held round those corners
   // (CrossFieldOptions::boundary_quads), as many as they leave
-  TriangleSoup input;
   QuadMeshOptions options;
   options.size_relative = 0.015;
-  io::ReadOptions read;
-  read.quad_size_relative = options.size_relative;
-  input = analyze_topology(io::read_surface(test::example("parts/z-plate-holes.geo"), read).soup).soup;
+  const TriangleSoup input = read_cad_part(test::example("parts/z-plate-holes.geo"), options.size_relative);
   std::vector<std::pair<std::string, double>> timings;
   Stages stages(timings, {});
   const FormSetup setup = turned_boundary_setup(prepare_forms(input, options, stages));
