@@ -61,8 +61,9 @@ RetryPolicy::Inputs retry_inputs(const FormSetup& setup, const QuadMeshOptions& 
 QuadMeshResult mesh_quads_on(TriangleSoup soup, const QuadMeshOptions& options, const ProgressCallback& progress) {
   std::vector<std::pair<std::string, double>> timings;
   Stages stages(timings, progress);
-  FormSetup setup = prepare_surface(std::move(soup), options, stages);
-  const SurfaceTopology input = topology_of(setup.soup);
+  // (the chord splits and the remeshing keep it)
+  const SurfaceTopology input = topology_of(soup);
+  FormSetup setup = prepare_surface(std::move(soup), input, options, stages);
   // the forms first where the cone route does not come first, or where the options
   // name a form (checked against the surface before any work)
   const bool form_asked = !options.coefficients.empty() || options.form >= 0;

@@ -338,7 +338,8 @@ TEST_CASE("a cone route kept first needs no forms: the same quads on the surface
   std::vector<std::pair<std::string, double>> timings;
   Stages stages(timings, {});
   const FormSetup formed = prepare_forms(soup, options, stages);
-  const FormSetup bare = prepare_surface(soup, options, stages);
+  const SurfaceTopology input = topology_of(soup);
+  const FormSetup bare = prepare_surface(soup, input, options, stages);
   CHECK(formed.forms_computed);
   CHECK(!bare.forms_computed);
   CHECK(bare.basis.empty());
@@ -346,7 +347,6 @@ TEST_CASE("a cone route kept first needs no forms: the same quads on the surface
   CHECK(bare.soup.triangles == formed.soup.triangles);
   CHECK(bare.preamble.doubled_genus == formed.preamble.doubled_genus);
   CHECK(std::isnan(bare.preamble.residuals.hodge_star_squared));
-  const SurfaceTopology input = topology_of(soup);
   ConesFirst with_forms = try_cones_first(formed, options, input, stages);
   ConesFirst without = try_cones_first(bare, options, input, stages);
   REQUIRE(with_forms.kept);

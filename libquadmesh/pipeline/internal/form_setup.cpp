@@ -105,7 +105,8 @@ void require_within_work_limit(const TriangleSoup& soup, const QuadMeshOptions& 
               "QuadMeshOptions::max_quads");
 }
 
-FormSetup prepare_surface(TriangleSoup soup, const QuadMeshOptions& options, Stages& stages) {
+FormSetup prepare_surface(TriangleSoup soup, SurfaceTopology topology, const QuadMeshOptions& options,
+                          Stages& stages) {
   FormSetup setup;
   QuadMeshResult& r = setup.preamble;
   setup.area = surface_area(soup);
@@ -114,7 +115,7 @@ FormSetup prepare_surface(TriangleSoup soup, const QuadMeshOptions& options, Sta
   if (options.remesh == RemeshPolicy::always) remesh_for_forms(soup, options, stages, r);
   r.chords_split = split_boundary_chords(soup);
   // with boundary, the doubled surface's genus is 2g + b - 1 = 1 - chi
-  r.doubled_genus = 1 - topology_of(soup).euler_characteristic;
+  r.doubled_genus = 1 - topology.euler_characteristic;
   const double not_computed = std::numeric_limits<double>::quiet_NaN();
   r.residuals = FormsResiduals{not_computed, not_computed, not_computed, not_computed, not_computed};
   r.input_hodge_star_squared = not_computed;
@@ -147,7 +148,8 @@ bool compute_forms(FormSetup& setup, const QuadMeshOptions& options, Stages& sta
 }
 
 FormSetup prepare_forms(TriangleSoup soup, const QuadMeshOptions& options, Stages& stages) {
-  FormSetup setup = prepare_surface(std::move(soup), options, stages);
+  const SurfaceTopology topology = topology_of(soup);
+  FormSetup setup = prepare_surface(std::move(soup), topology, options, stages);
   compute_forms(setup, options, stages);
   return setup;
 }

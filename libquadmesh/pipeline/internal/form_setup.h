@@ -27,10 +27,11 @@ void require_within_work_limit(const TriangleSoup& soup, const QuadMeshOptions& 
 
 /// The surface before any form: its area, diagonal and requested size, remeshed
 /// first when asked (RemeshPolicy::always), its boundary chords split, and the
-/// doubled surface's genus (1 - chi); the forms' residuals NaN (not computed).
-/// What the cone route needs: a cone route kept first never computes the forms
-/// (bunny-open: 1.8 s of its 13).
-FormSetup prepare_surface(TriangleSoup soup, const QuadMeshOptions& options, Stages& stages);
+/// doubled surface's genus (1 - chi, `topology` the soup's: topology_of); the
+/// forms' residuals NaN (not computed). What the cone route needs: a cone route
+/// kept first never computes the forms (bunny-open: 1.8 s of its 13).
+FormSetup prepare_surface(TriangleSoup soup, SurfaceTopology topology, const QuadMeshOptions& options,
+                          Stages& stages);
 
 /// The symmetric forms on setup.soup, remeshed first when the input's forms are
 /// inaccurate (RemeshPolicy::automatic), the loops the quantization rounds, and
