@@ -332,9 +332,10 @@ std::vector<ConeAttempt> cone_attempts_side_by_side(const FormSetup& setup,
     std::vector<std::pair<std::string, double>> timings;
     const ProgressCallback record = [&messages](const std::string& message) { messages.push_back(message); };
     Stages stages(timings, record);
-    const StopRequest stop = [&ended_at, i] { return ended_at.load() < i; };
+    StopRequest stop;
+    if (protrusion_ends_batch) stop = [&ended_at, i] { return ended_at.load() < i; };
     out[i] = run_attempt(setup, placements[i], stages, lattice_factor, smooth_inverted, placed,
-                         surfaces ? &(*surfaces)[i] : nullptr, protrusion_ends_batch ? stop : StopRequest{});
+                         surfaces ? &(*surfaces)[i] : nullptr, stop);
     if (protrusion_ends_batch && out[i].uncapped_protrusion) {
       std::size_t ended = ended_at.load();
       while (i < ended && !ended_at.compare_exchange_weak(ended, i)) {
