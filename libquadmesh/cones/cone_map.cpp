@@ -80,8 +80,10 @@ ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, co
   // and the map sheared at each tip, its quad a parallelogram along the tip's
   // edges (tip_shear.h)
   const FitShape shape = tip_shear(soup, adjacency, tips, out.field, size);
-  out.map =
-      seamless_map(soup, adjacency, scale, out.field, out.cut, out.quads, size, out.report, order, &shape, {}, stop);
+  // the maps below share one system pattern, so one fill-reducing ordering
+  MapOrdering ordering;
+  out.map = seamless_map(soup, adjacency, scale, out.field, out.cut, out.quads, size, out.report, order, &shape, {},
+                         stop, &ordering);
   if (out.report.inverted_triangles > 0) out.misturned = misturned_cones(soup, adjacency, out.map, out.quads);
   // a map folded round one cone it winds a turn short is quantized again from
   // chosen offsets of the lattice (the rounding then takes other integers from the
@@ -98,7 +100,7 @@ ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, co
     std::vector<SeamlessMapReport> reports(width);
     parallel_for_index(width, [&](std::size_t i) {
       maps[i] = seamless_map(soup, adjacency, scale, out.field, out.cut, out.quads, size, reports[i], order, &shape,
-                             lattice_shifts[next + i]);
+                             lattice_shifts[next + i], {}, &ordering);
     });
     for (std::size_t i = 0; i < width && out.misturned.size() == 1; ++i, ++next) {
       if (reports[i].inverted_triangles >= out.report.inverted_triangles) continue;

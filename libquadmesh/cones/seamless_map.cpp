@@ -267,22 +267,65 @@ IntegerCandidates integer_candidates(const TriangleSoup& soup, const SurfaceAdja
   return out;
 }
 
-/// Held while METIS orders a system (PenaltySolver::solve).
+/// Held while METIS orders a system (a MapOrdering's first map).
 std::mutex metis_mutex;
+
+/// CHOLMOD's simplicial Cholesky factorization, analysed by CHOLMOD's default
+/// ordering (minimum degree), by METIS's nested dissection, or by a permutation
+/// given (CHOLMOD's own from an analysis before: the same factorization).
+class OrderedCholesky : public Eigen::CholmodSimplicialLLT<SparseMatrix, Eigen::Lower> {
+ public:
+  /// H's pattern ordered by METIS; returns CHOLMOD's permutation (postordered).
+  std::vector<int> analyse_by_nested_dissection(const SparseMatrix& H) {
+    cholmod().nmethods = 1;
+    cholmod().method[0].ordering = CHOLMOD_METIS;
+    {
+      // METIS draws from one random state for the whole process, seeded at each
+      // call: two calls at once (placements side by side) would order differently
+      // from one at a time
+      std::lock_guard<std::mutex> lock(metis_mutex);
+      analyzePattern(H);
+    }
+    if (!m_cholmodFactor || !m_cholmodFactor->Perm)
+      throw Error(ErrorCode::solver, "the seamless map's system could not be ordered");
+    const int* p = static_cast<const int*>(m_cholmodFactor->Perm);
+    return {p, p + m_cholmodFactor->n};
+  }
+
+  /// H's pattern ordered by `permutation` (analyse_by_nested_dissection's on this pattern).
+  void analyse_by(const SparseMatrix& H, const std::vector<int>& permutation) {
+    QM_ASSERT(static_cast<Eigen::Index>(permutation.size()) == H.rows());
+    if (m_cholmodFactor) cholmod_free_factor(&m_cholmodFactor, &cholmod());
+    cholmod().nmethods = 1;
+    cholmod().method[0].ordering = CHOLMOD_GIVEN;
+    cholmod_sparse A = Eigen::viewAsCholmod(H.selfadjointView<Eigen::Lower>());
+    std::vector<int> given = permutation;  // (CHOLMOD's signature is not const)
+    m_cholmodFactor = cholmod_analyze_p(&A, given.data(), nullptr, 0, &cholmod());
+    if (!m_cholmodFactor) throw Error(ErrorCode::solver, "the seamless map's system could not be ordered");
+    m_isInitialized = true;
+    m_info = Eigen::Success;
+    m_analysisIsOk = true;
+    m_factorizationIsOk = false;
+  }
+};
 
 /// The fitting energy with the seam rows and the fixed values as penalties,
 /// solved again after each fix. A fix only adds to a diagonal entry, and the
-/// stiffening only changes values, so the sparsity pattern never changes: CHOLMOD
-/// orders and analyses it once and factors numerically at each solve; the energy
-/// with the seam rows is assembled once per energy.
+/// stiffening only changes values, so the sparsity pattern never changes: it is
+/// ordered and analysed once per ordering and factored numerically at each solve;
+/// the energy with the seam rows is assembled once per energy. Ordered as
+/// `ordering` says (MapOrdering, analyse()), its minimum degree ordering first
+/// unless `nested_dissection_first`.
 class PenaltySolver {
  public:
-  /// `nested_dissection`: the fill-reducing ordering is METIS's, else CHOLMOD's
-  /// default (minimum degree).
   /// `stop`, when set, is asked before every solve (stop_request.h: Stopped).
-  PenaltySolver(int variables, Triplets energy, Eigen::VectorXd rhs, std::vector<Row> rows, bool nested_dissection,
-                StopRequest stop = {})
-      : n_(variables), rows_(std::move(rows)), nested_dissection_(nested_dissection), stop_(std::move(stop)) {
+  PenaltySolver(int variables, Triplets energy, Eigen::VectorXd rhs, std::vector<Row> rows,
+                bool nested_dissection_first, MapOrdering& ordering, StopRequest stop = {})
+      : n_(variables),
+        rows_(std::move(rows)),
+        minimum_degree_first_(!nested_dissection_first),
+        ordering_(ordering),
+        stop_(std::move(stop)) {
     set_energy(std::move(energy), std::move(rhs));
   }
 
@@ -316,22 +359,12 @@ class PenaltySolver {
       H.coeffRef(v, v) += penalty_weight;
       b[v] += penalty_weight * value;
     }
-    if (!analysed_) {
-      std::unique_lock<std::mutex> lock(metis_mutex, std::defer_lock);
-      if (nested_dissection_) {
-        solver_.cholmod().nmethods = 1;
-        solver_.cholmod().method[0].ordering = CHOLMOD_METIS;
-        // METIS draws from one random state for the whole process, seeded at
-        // each call: two calls at once (placements side by side) would order
-        // differently from one at a time
-        lock.lock();
-      }
-      solver_.analyzePattern(H);
-      analysed_ = true;
-    }
+    analyse(H);
     solver_.factorize(H);
     if (solver_.info() != Eigen::Success)
       throw Error(ErrorCode::solver, "the seamless map's system could not be factored");
+    ++factorizations_;
+    if (analysed_ == Analysis::nested_dissection) ++nested_dissection_factorizations_;
     Eigen::VectorXd z = solver_.solve(b);
     if (solver_.info() != Eigen::Success || !z.allFinite())
       throw Error(ErrorCode::solver, "the seamless map's solve failed");
@@ -340,6 +373,24 @@ class PenaltySolver {
     columns_ = 0;
     refactor_ = false;
     return z;
+  }
+
+  /// Orders and analyses H's pattern where solve() needs it: at the first solve by
+  /// the minimum degree ordering, and by the shared nested dissection where it
+  /// pays (MapOrdering), from the first solve of a map from a lattice shift and
+  /// from the second of another map.
+  void analyse(const SparseMatrix& H) {
+    if (analysed_ == Analysis::none) {
+      solver_.analyzePattern(H);
+      analysed_ = Analysis::minimum_degree;
+      nested_dissection_pays_ = ordering_.nested_dissection_pays(solver_.cholmod().fl, n_);
+      if (minimum_degree_first_) return;
+    }
+    if (analysed_ == Analysis::nested_dissection || !nested_dissection_pays_) return;
+    const std::vector<int>& permutation =
+        ordering_.nested_dissection([&] { return solver_.analyse_by_nested_dissection(H); });
+    solver_.analyse_by(H, permutation);
+    analysed_ = Analysis::nested_dissection;
   }
 
   /// The same minimizer after more values were fixed, from the last factorization
@@ -401,6 +452,8 @@ class PenaltySolver {
   }
 
   const std::vector<Row>& rows() const { return rows_; }
+  std::size_t factorizations() const { return factorizations_; }
+  std::size_t nested_dissection_factorizations() const { return nested_dissection_factorizations_; }
 
   double max_residual(const Eigen::VectorXd& z) const {
     double worst = 0;
@@ -419,9 +472,12 @@ class PenaltySolver {
   std::vector<std::pair<int, double>> fixed_;   ///< values made integer
   SparseMatrix base_;                           ///< energy + seam penalties
   Eigen::VectorXd base_rhs_;
-  Eigen::CholmodSimplicialLLT<SparseMatrix, Eigen::Lower> solver_;
-  bool nested_dissection_ = false;
-  bool analysed_ = false;
+  OrderedCholesky solver_;
+  bool minimum_degree_first_ = true;
+  MapOrdering& ordering_;
+  enum class Analysis { none, minimum_degree, nested_dissection } analysed_ = Analysis::none;
+  bool nested_dissection_pays_ = false;
+  std::size_t factorizations_ = 0, nested_dissection_factorizations_ = 0;
   std::size_t factored_ = 0;          ///< fixed_[0, factored_) are in the factorization
   Eigen::VectorXd factored_solution_;  ///< its solution
   Eigen::MatrixXd Y_;                 ///< H0^-1 e_v of the values fixed since (columns_ of them)
@@ -706,7 +762,7 @@ void stiffen(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const 
 FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u,
                      const CrossField& field, const CutGraph& cut, const std::vector<int>& quads, double size,
                      SeamlessMapReport& report, RoundingOrder order, const FitShape* shape,
-                     std::optional<Complex> lattice_shift, const StopRequest& stop) {
+                     std::optional<Complex> lattice_shift, const StopRequest& stop, MapOrdering* ordering) {
   QM_ASSERT(size > 0);
   report = {};
   std::vector<Row> rows;
@@ -727,12 +783,13 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   Eigen::VectorXd b;
   energy(H, b);
   // a map from a lattice shift is a new draw, its translation set apart from the
-  // round-off: ordered by nested dissection (on bunny-open's map, 75,000
-  // unknowns, a third of the flops of the minimum degree ordering, factored in
-  // 0.18 s against 0.48 s, and a quarter less fill for the back-substitutions).
-  // Without one the map is quantized as the seed's maps always were (its
-  // translation the minimum degree ordering's round-off: the same quads)
-  PenaltySolver solver(variables, std::move(H), std::move(b), std::move(rows), lattice_shift.has_value(), stop);
+  // round-off (moved to the values' circular mean), so it may be ordered by nested
+  // dissection from its first solve; another map's first solve leaves the
+  // translation the quantization starts from where the minimum degree ordering's
+  // round-off does, as the seed's maps always did (the same quads)
+  MapOrdering own_ordering;
+  PenaltySolver solver(variables, std::move(H), std::move(b), std::move(rows), lattice_shift.has_value(),
+                       ordering ? *ordering : own_ordering, stop);
   std::vector<std::pair<int, double>> integers;
   const IntegerCandidates candidates =
       integer_candidates(soup, adjacency, field, cut, quads, translations, variables, order);
@@ -787,6 +844,8 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
     }
   propagate_exact_values(solver.rows(), exact, z);
   report.max_seam_residual = solver.max_residual(z);
+  report.factorizations = solver.factorizations();
+  report.nested_dissection_factorizations = solver.nested_dissection_factorizations();
 
   FaceMap map = corner_values(cut, z);
   const std::vector<char> folded = folded_triangles(map);

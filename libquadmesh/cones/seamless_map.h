@@ -15,6 +15,7 @@
 #pragma once
 
 #include "libquadmesh/cones/cut_graph.h"
+#include "libquadmesh/cones/map_ordering.h"
 #include "libquadmesh/cones/tip_shear.h"
 #include "libquadmesh/core/stop_request.h"
 #include "libquadmesh/param/face_map.h"
@@ -30,6 +31,9 @@ struct SeamlessMapReport {
   double max_rounding = 0;          ///< largest distance a value was moved to its integer
   std::size_t inverted_triangles = 0;  ///< image area <= 0
   int stiffening_rounds = 0;        ///< re-solves with folded triangles weighing more
+  std::size_t factorizations = 0;   ///< numeric factorizations of the system
+  /// of them, those ordered by nested dissection (map_ordering.h)
+  std::size_t nested_dissection_factorizations = 0;
   /// the stiffening stopped where its folds grew past their fewest round an interior
   /// cone the map winds a turn short (cone_winding.h): it was losing
   bool stiffening_lost = false;
@@ -61,11 +65,16 @@ enum class RoundingOrder { cones_first, translations_first };
 /// per axis) plus the shift: the same cones quantized from a chosen offset of the
 /// lattice (cone_map.h tries some where the map folds round a cone).
 /// With `stop`, asked before each solve: Stopped is thrown when it says so.
+/// `ordering`: the cone set's shared ordering (the map's own when null). Where it
+/// orders by nested dissection, a map without `lattice_shift` is still first
+/// factored in the minimum degree ordering: the first solve's round-off gives the
+/// translation the quantization starts from, as it always has (afterwards the
+/// values fixed hold it, and the ordering moves only the round-off).
 /// Throws qm::Error (solver) when the system cannot be factored.
 FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u,
                      const CrossField& field, const CutGraph& cut, const std::vector<int>& quads, double size,
                      SeamlessMapReport& report, RoundingOrder order = RoundingOrder::cones_first,
                      const FitShape* shape = nullptr, std::optional<Complex> lattice_shift = std::nullopt,
-                     const StopRequest& stop = {});
+                     const StopRequest& stop = {}, MapOrdering* ordering = nullptr);
 
 }  // namespace qm

@@ -347,6 +347,56 @@ TEST_CASE("the quantization starts from the values' lattice offset: a whole quad
   map_at({0.5, 0.5});
 }
 
+TEST_CASE("the maps of one cone set share a nested dissection: a map made with it given is the map that ordered "
+          "it, and a map switched to it after its first solve keeps its integers") {
+  // MapOrdering(0) orders every map by nested dissection (where it pays: here
+  // always); MapOrdering(infinity), never
+  const TriangleSoup soup = test::grid(40);
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  std::vector<Cone> cones = square_corners(soup, 1.0);
+  cones.push_back({vertex_at(soup, 11.0 / 40, 18.0 / 40), 3});
+  cones.push_back({vertex_at(soup, 27.0 / 40, 21.0 / 40), 5});
+  const double size = 1.0 / 36.5;  // more values to round than one factorization takes
+  const ConeMap m = cone_map(soup, adjacency, cones, size);
+  const auto map_with = [&](MapOrdering& ordering, std::optional<Complex> shift, SeamlessMapReport& report) {
+    const FaceMap map = seamless_map(soup, adjacency, m.u, m.field, m.cut, m.quads, size, report,
+                                     RoundingOrder::cones_first, nullptr, shift, {}, &ordering);
+    CHECK(report.inverted_triangles == 0);
+    CHECK(report.max_seam_residual < 1e-9);
+    check_cones(soup, map, cones);
+    return map;
+  };
+  const auto largest_gap = [](const FaceMap& a, const FaceMap& b) {
+    double gap = 0;
+    for (std::size_t f = 0; f < a.corners.size(); ++f)
+      for (std::size_t k = 0; k < 3; ++k) gap = std::max(gap, std::abs(b.corners[f][k] - a.corners[f][k]));
+    return gap;
+  };
+  // from a lattice shift: the first map orders the pattern (METIS), the second is
+  // given that ordering, and factors exactly as the first did
+  MapOrdering shared(0);
+  SeamlessMapReport ordering_it, given_it;
+  const FaceMap first = map_with(shared, Complex(0.5, 0), ordering_it);
+  const FaceMap second = map_with(shared, Complex(0.5, 0), given_it);
+  CHECK(ordering_it.factorizations >= 2);
+  CHECK(ordering_it.nested_dissection_factorizations == ordering_it.factorizations);
+  CHECK(given_it.nested_dissection_factorizations == given_it.factorizations);
+  CHECK(largest_gap(first, second) == 0.0);
+  // from the first solve's translation: the first factorization by minimum degree
+  // (the translation the rounding starts from), the rest by nested dissection;
+  // the same integers as by minimum degree throughout, and the map the same to the
+  // round-off the penalties' weight (1e8) leaves (2e-6 of a quad here)
+  MapOrdering never(std::numeric_limits<double>::infinity()), always(0);
+  SeamlessMapReport by_minimum_degree, switched;
+  const FaceMap minimum_degree = map_with(never, std::nullopt, by_minimum_degree);
+  const FaceMap nested_dissection = map_with(always, std::nullopt, switched);
+  CHECK(by_minimum_degree.nested_dissection_factorizations == 0);
+  CHECK(switched.factorizations == by_minimum_degree.factorizations);
+  CHECK(switched.nested_dissection_factorizations == switched.factorizations - 1);
+  CHECK(switched.integer_values == by_minimum_degree.integer_values);
+  CHECK(largest_gap(minimum_degree, nested_dissection) < 1e-5);
+}
+
 TEST_CASE("an L-shape with its five convex corners and one concave corner maps onto a lattice L") {
   const TriangleSoup soup = test::l_shape(6);
   const SurfaceAdjacency adjacency = surface_adjacency(soup);

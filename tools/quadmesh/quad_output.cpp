@@ -252,6 +252,8 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
                         {"integer_values", result.cone_map.integer_values},
                         {"max_rounding", result.cone_map.max_rounding},
                         {"stiffening_rounds", result.cone_map.stiffening_rounds},
+                        {"factorizations", result.cone_map.factorizations},
+                        {"nested_dissection_factorizations", result.cone_map.nested_dissection_factorizations},
                         {"lattice_shifts", result.cone_map.lattice_shifts},
                         {"other_integers", result.cone_map.other_integers},
                         {"rounding_order", result.rounding_order},
