@@ -248,6 +248,37 @@ std::vector<Cone> square_corners(const TriangleSoup& soup, double side) {
           {vertex_at(soup, 0, side), 1}};
 }
 
+/// The unit square's four corners and a valence-3 and a valence-5 cone at the
+/// vertices nearest (x3, y3) and (x5, y5).
+std::vector<Cone> square_with_pair(const TriangleSoup& soup, double x3, double y3, double x5, double y5) {
+  std::vector<Cone> cones = square_corners(soup, 1.0);
+  cones.push_back({vertex_at(soup, x3, y3), 3});
+  cones.push_back({vertex_at(soup, x5, y5), 5});
+  return cones;
+}
+
+/// The seamless map of m's cones (`cones`) at `size`, from `shift` and with
+/// `ordering` when given, checked unfolded, its seams closed and its cones on
+/// lattice points.
+FaceMap checked_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const ConeMap& m,
+                    const std::vector<Cone>& cones, double size, std::optional<Complex> shift,
+                    SeamlessMapReport& report, MapOrdering* ordering = nullptr) {
+  const FaceMap map = seamless_map(soup, adjacency, m.u, m.field, m.cut, m.quads, size, report,
+                                   RoundingOrder::cones_first, nullptr, shift, {}, ordering);
+  CHECK(report.inverted_triangles == 0);
+  CHECK(report.max_seam_residual < 1e-9);
+  check_cones(soup, map, cones);
+  return map;
+}
+
+/// The largest difference of two maps' corners from `moved`.
+double largest_gap(const FaceMap& a, const FaceMap& b, Complex moved = {}) {
+  double gap = 0;
+  for (std::size_t f = 0; f < a.corners.size(); ++f)
+    for (std::size_t k = 0; k < 3; ++k) gap = std::max(gap, std::abs(b.corners[f][k] - a.corners[f][k] - moved));
+  return gap;
+}
+
 }  // namespace
 
 TEST_CASE("a cone set that breaks Gauss-Bonnet is refused with the count it misses") {
@@ -315,27 +346,13 @@ TEST_CASE("the quantization starts from the values' lattice offset: a whole quad
   // a whole quad moves the same integers by one (up to the gauge's faint pull)
   const TriangleSoup soup = test::grid(24);
   const SurfaceAdjacency adjacency = surface_adjacency(soup);
-  std::vector<Cone> cones = square_corners(soup, 1.0);
-  cones.push_back({vertex_at(soup, 7.0 / 24, 11.0 / 24), 3});
-  cones.push_back({vertex_at(soup, 16.0 / 24, 13.0 / 24), 5});
+  const std::vector<Cone> cones = square_with_pair(soup, 7.0 / 24, 11.0 / 24, 16.0 / 24, 13.0 / 24);
   const double size = 1.0 / 9.5;  // the cones and the sides off the lattice before rounding
   const ConeMap m = cone_map(soup, adjacency, cones, size);
   CHECK(m.report.lattice_shifts == 0);  // nothing folded
   const auto map_at = [&](Complex shift) {
     SeamlessMapReport report;
-    const FaceMap map = seamless_map(soup, adjacency, m.u, m.field, m.cut, m.quads, size, report,
-                                     RoundingOrder::cones_first, nullptr, shift);
-    CHECK(report.inverted_triangles == 0);
-    CHECK(report.max_seam_residual < 1e-9);
-    check_cones(soup, map, cones);
-    return map;
-  };
-  // the largest difference of two maps' corners from `moved`
-  const auto largest_gap = [&](const FaceMap& a, const FaceMap& b, Complex moved) {
-    double gap = 0;
-    for (std::size_t f = 0; f < a.corners.size(); ++f)
-      for (std::size_t k = 0; k < 3; ++k) gap = std::max(gap, std::abs(b.corners[f][k] - a.corners[f][k] - moved));
-    return gap;
+    return checked_map(soup, adjacency, m, cones, size, shift, report);
   };
   const FaceMap at_zero = map_at({0, 0});
   CHECK(largest_gap(at_zero, map_at({1, 0}), {1, 0}) < 1e-6);
@@ -353,24 +370,11 @@ TEST_CASE("the maps of one cone set share a nested dissection: a map made with i
   // always); MapOrdering(infinity), never
   const TriangleSoup soup = test::grid(40);
   const SurfaceAdjacency adjacency = surface_adjacency(soup);
-  std::vector<Cone> cones = square_corners(soup, 1.0);
-  cones.push_back({vertex_at(soup, 11.0 / 40, 18.0 / 40), 3});
-  cones.push_back({vertex_at(soup, 27.0 / 40, 21.0 / 40), 5});
+  const std::vector<Cone> cones = square_with_pair(soup, 11.0 / 40, 18.0 / 40, 27.0 / 40, 21.0 / 40);
   const double size = 1.0 / 36.5;  // more values to round than one factorization takes
   const ConeMap m = cone_map(soup, adjacency, cones, size);
   const auto map_with = [&](MapOrdering& ordering, std::optional<Complex> shift, SeamlessMapReport& report) {
-    const FaceMap map = seamless_map(soup, adjacency, m.u, m.field, m.cut, m.quads, size, report,
-                                     RoundingOrder::cones_first, nullptr, shift, {}, &ordering);
-    CHECK(report.inverted_triangles == 0);
-    CHECK(report.max_seam_residual < 1e-9);
-    check_cones(soup, map, cones);
-    return map;
-  };
-  const auto largest_gap = [](const FaceMap& a, const FaceMap& b) {
-    double gap = 0;
-    for (std::size_t f = 0; f < a.corners.size(); ++f)
-      for (std::size_t k = 0; k < 3; ++k) gap = std::max(gap, std::abs(b.corners[f][k] - a.corners[f][k]));
-    return gap;
+    return checked_map(soup, adjacency, m, cones, size, shift, report, &ordering);
   };
   // from a lattice shift: the first map orders the pattern (METIS), the second is
   // given that ordering, and factors exactly as the first did
