@@ -14,7 +14,8 @@ namespace qm {
 /// factorizations are ordered by CHOLMOD's minimum degree unless that ordering's
 /// factorization costs more than `flops_per_unknown` per unknown (CHOLMOD's count
 /// from the analysis); then by METIS's nested dissection, ordered once, by the
-/// first map that asks, under the lock METIS needs (its random state is the
+/// first map that asks (a map asking meanwhile waits for it; METIS itself runs
+/// under a process-wide lock, seamless_map.cpp, its random state being the
 /// process's). Share one between the maps of a cone set, never across cone sets.
 class MapOrdering {
  public:
