@@ -4,6 +4,7 @@
 #include "libquadmesh/cones/internal/boundary_ligaments.h"
 #include "libquadmesh/cones/internal/boundary_segments.h"
 #include "libquadmesh/cones/internal/face_geometry.h"
+#include "libquadmesh/cones/internal/low_rank_columns.h"
 #include "libquadmesh/cones/internal/translation_classes.h"
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/core/internal/union_find.h"
@@ -43,8 +44,12 @@ constexpr double max_stiffness = 1e3;
 constexpr double integer_tolerance = 1e-6;
 /// The rounding's solves between two factorizations: each value made integer adds
 /// a diagonal penalty, a rank-one change, solved by the Woodbury identity on the
-/// last factorization (one back-substitution per value) until this many.
-constexpr int max_low_rank = 64;
+/// last factorization (a column of its inverse per value: LowRankColumns) until
+/// this many.
+constexpr std::size_t max_low_rank = 64;
+/// The columns of H0^-1 one solve computes at least, where as many values are
+/// expected to be fixed (LowRankColumns).
+constexpr std::size_t column_batch = 4;
 /// Seams and fixed values hold when no residual is above this (lattice units): a
 /// rounding to other than the nearest integer that breaks them is refused, and no
 /// stiffening is tried on integers that break them.
@@ -325,6 +330,7 @@ class PenaltySolver {
         rows_(std::move(rows)),
         minimum_degree_first_(!nested_dissection_first),
         ordering_(ordering),
+        columns_(variables, max_low_rank, column_batch),
         stop_(std::move(stop)) {
     set_energy(std::move(energy), std::move(rhs));
   }
@@ -335,7 +341,6 @@ class PenaltySolver {
   void unfix(std::size_t count) {
     fixed_.resize(fixed_.size() - count);
     if (fixed_.size() < factored_) refactor_ = true;  // a full solve had them: factor again
-    else columns_ = std::min(columns_, fixed_.size() - factored_);
   }
 
   void set_energy(Triplets energy, Eigen::VectorXd rhs) {
@@ -370,7 +375,7 @@ class PenaltySolver {
       throw Error(ErrorCode::solver, "the seamless map's solve failed");
     factored_ = fixed_.size();
     factored_solution_ = z;
-    columns_ = 0;
+    columns_.clear();
     refactor_ = false;
     return z;
   }
@@ -403,30 +408,31 @@ class PenaltySolver {
     if (refactor_) return solve();
     const std::size_t k = fixed_.size() - factored_;
     if (k == 0) return factored_solution_;
-    if (k > static_cast<std::size_t>(max_low_rank)) return solve();
-    if (Y_.rows() != n_) Y_.resize(n_, max_low_rank);
-    if (columns_ < k) {
-      // the new columns in one solve with as many right sides
-      const auto fresh = static_cast<Eigen::Index>(k - columns_);
-      Eigen::MatrixXd E = Eigen::MatrixXd::Zero(n_, fresh);
-      for (Eigen::Index c = 0; c < fresh; ++c) E(fixed_[factored_ + columns_ + static_cast<std::size_t>(c)].first, c) = 1;
-      Y_.middleCols(static_cast<Eigen::Index>(columns_), fresh) = solver_.solve(E);
+    if (k > max_low_rank) return solve();
+    std::vector<int> values(k);
+    for (std::size_t i = 0; i < k; ++i) values[i] = fixed_[factored_ + i].first;
+    const Eigen::MatrixXd& Y = columns_.align(values, [&](const Eigen::MatrixXd& units) {
+      Eigen::MatrixXd solved = solver_.solve(units);
       if (solver_.info() != Eigen::Success) throw Error(ErrorCode::solver, "the seamless map's solve failed");
-      columns_ = k;
-    }
+      return solved;
+    });
     const auto K = static_cast<Eigen::Index>(k);
     Eigen::MatrixXd M = Eigen::MatrixXd::Identity(K, K) / penalty_weight;
     Eigen::VectorXd gap(K);
     for (Eigen::Index i = 0; i < K; ++i) {
       const auto& [v, value] = fixed_[factored_ + static_cast<std::size_t>(i)];
-      for (Eigen::Index j = 0; j < K; ++j) M(i, j) += Y_(v, j);
+      for (Eigen::Index j = 0; j < K; ++j) M(i, j) += Y(v, j);
       gap[i] = value - factored_solution_[v];
     }
     const Eigen::VectorXd c = M.partialPivLu().solve(gap);
-    Eigen::VectorXd z = factored_solution_ + Y_.leftCols(K) * c;
+    Eigen::VectorXd z = factored_solution_ + Y.leftCols(K) * c;
     if (!z.allFinite()) return solve();
     return z;
   }
+
+  /// The values the rounding is likely to fix next, nearest first: a solve for a
+  /// missing column fills its batch with theirs.
+  void expect(std::vector<int> variables) { columns_.expect(std::move(variables)); }
 
   /// z (the minimizer with every value fixed so far) with the seam rows and fixed
   /// values held to round-off: the penalty leaves them off by the energy's pull
@@ -454,6 +460,7 @@ class PenaltySolver {
   const std::vector<Row>& rows() const { return rows_; }
   std::size_t factorizations() const { return factorizations_; }
   std::size_t nested_dissection_factorizations() const { return nested_dissection_factorizations_; }
+  const LowRankColumns& low_rank_columns() const { return columns_; }
 
   double max_residual(const Eigen::VectorXd& z) const {
     double worst = 0;
@@ -480,8 +487,7 @@ class PenaltySolver {
   std::size_t factorizations_ = 0, nested_dissection_factorizations_ = 0;
   std::size_t factored_ = 0;          ///< fixed_[0, factored_) are in the factorization
   Eigen::VectorXd factored_solution_;  ///< its solution
-  Eigen::MatrixXd Y_;                 ///< H0^-1 e_v of the values fixed since (columns_ of them)
-  std::size_t columns_ = 0;
+  LowRankColumns columns_;            ///< H0^-1 e_v of the values fixed since (and of others)
   bool refactor_ = false;  ///< fixes in the factorization were taken back
   StopRequest stop_;
 };
@@ -627,6 +633,31 @@ void translate(Eigen::VectorXd& z, Complex c, int wedge_values, const std::vecto
   }
 }
 
+/// The candidates not fixed and not in `step` that the rounding would fix next if
+/// z stayed as it is: the nearest to integers first (with their pairs), as many
+/// as two batches of columns.
+std::vector<int> expected_values(const std::vector<int>& candidates, const std::vector<char>& fixed,
+                                 const Eigen::VectorXd& z, const std::vector<int>& step, bool paired) {
+  std::vector<std::pair<double, int>> open;
+  for (int v : candidates)
+    if (!fixed[static_cast<std::size_t>(v)] && std::find(step.begin(), step.end(), v) == step.end())
+      open.push_back({std::abs(z[v] - std::round(z[v])), v});
+  const std::size_t wanted = 2 * column_batch;
+  const auto take = std::min(open.size(), wanted);
+  std::partial_sort(open.begin(), open.begin() + static_cast<std::ptrdiff_t>(take), open.end());
+  std::vector<int> expected;
+  for (std::size_t i = 0; i < take && expected.size() < wanted; ++i) {
+    const int v = open[i].second;
+    if (std::find(expected.begin(), expected.end(), v) != expected.end()) continue;
+    expected.push_back(v);
+    const int pair = v ^ 1;
+    if (paired && !fixed[static_cast<std::size_t>(pair)] && std::find(step.begin(), step.end(), pair) == step.end() &&
+        std::find(expected.begin(), expected.end(), pair) == expected.end())
+      expected.push_back(pair);
+  }
+  return expected;
+}
+
 /// Greedy rounding, phase by phase: fix every candidate already integer and the
 /// one nearest to an integer, solve, repeat. Returns the final solution; `fixed`
 /// gets the values made integer. With `lattice_shift`, the first solve is moved
@@ -673,6 +704,7 @@ Eigen::VectorXd quantize(PenaltySolver& solver, const IntegerCandidates& order, 
       std::vector<int> step;
       for (int v : paired ? std::vector<int>{nearest, nearest ^ 1} : std::vector<int>{nearest})
         if (!fixed[static_cast<std::size_t>(v)]) step.push_back(v);
+      solver.expect(expected_values(candidates, fixed, z, step, paired));
       // the nearest integers, unless they determine another value at a fraction or
       // put two corners on one lattice point (a boundary segment of length 0) where
       // the next ones do not; when every option does, the one with fewest
@@ -846,6 +878,8 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   report.max_seam_residual = solver.max_residual(z);
   report.factorizations = solver.factorizations();
   report.nested_dissection_factorizations = solver.nested_dissection_factorizations();
+  report.low_rank_columns = solver.low_rank_columns().computed();
+  report.low_rank_column_solves = solver.low_rank_columns().solves();
 
   FaceMap map = corner_values(cut, z);
   const std::vector<char> folded = folded_triangles(map);

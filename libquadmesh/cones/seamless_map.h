@@ -34,6 +34,10 @@ struct SeamlessMapReport {
   std::size_t factorizations = 0;   ///< numeric factorizations of the system
   /// of them, those ordered by nested dissection (map_ordering.h)
   std::size_t nested_dissection_factorizations = 0;
+  /// the rounding's columns H0^-1 e_v (low_rank_columns.h), and the back-substitutions
+  /// that computed them
+  std::size_t low_rank_columns = 0;
+  std::size_t low_rank_column_solves = 0;
   /// the stiffening stopped where its folds grew past their fewest round an interior
   /// cone the map winds a turn short (cone_winding.h): it was losing
   bool stiffening_lost = false;
