@@ -487,7 +487,7 @@ class PenaltySolver {
   std::size_t factorizations_ = 0, nested_dissection_factorizations_ = 0;
   std::size_t factored_ = 0;          ///< fixed_[0, factored_) are in the factorization
   Eigen::VectorXd factored_solution_;  ///< its solution
-  LowRankColumns columns_;            ///< H0^-1 e_v of the values fixed since (and of others)
+  LowRankColumns columns_;            ///< H0^-1 e_v of the values fixed since, and of some expected
   bool refactor_ = false;  ///< fixes in the factorization were taken back
   StopRequest stop_;
 };
