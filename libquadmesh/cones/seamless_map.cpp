@@ -5,11 +5,12 @@
 #include "libquadmesh/cones/internal/boundary_segments.h"
 #include "libquadmesh/cones/internal/face_geometry.h"
 #include "libquadmesh/cones/internal/low_rank_columns.h"
+#include "libquadmesh/cones/internal/ordered_cholesky.h"
+#include "libquadmesh/cones/internal/stiffness_change.h"
 #include "libquadmesh/cones/internal/translation_classes.h"
 #include "libquadmesh/core/error.h"
 #include "libquadmesh/core/internal/union_find.h"
 
-#include <Eigen/CholmodSupport>
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
@@ -17,7 +18,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <mutex>
 #include <optional>
 #include <utility>
 
@@ -50,6 +50,10 @@ constexpr std::size_t max_low_rank = 64;
 /// The columns of H0^-1 one solve computes at least, where as many values are
 /// expected to be fixed (LowRankColumns).
 constexpr std::size_t column_batch = 4;
+/// The most wedges a stiffening round's change may have for the factorization to
+/// be updated by it (its dense factorization, cubic in them, then costs less than
+/// the system's: stiffness_change.h); past them the system is factored again.
+constexpr std::size_t max_update_wedges = 400;
 /// Seams and fixed values hold when no residual is above this (lattice units): a
 /// rounding to other than the nearest integer that breaks them is refused, and no
 /// stiffening is tried on integers that break them.
@@ -98,11 +102,11 @@ std::vector<Complex> target_scales(const TriangleSoup& soup, const Eigen::Vector
   return scale;
 }
 
-/// The fitting energy's matrix and right side (the cotan form of the Dirichlet
-/// energy of W - target on each triangle; the target's gradient the scale, or
-/// the scale times `shape` where given).
+/// The fitting energy's matrix (where H is given) and right side (the cotan form
+/// of the Dirichlet energy of W - target on each triangle; the target's gradient
+/// the scale, or the scale times `shape` where given).
 void add_fitting_energy(const TriangleSoup& soup, const std::vector<Complex>& scales, const FitShape* shape,
-                        const CutGraph& cut, const std::vector<double>& stiffness, Triplets& H, Eigen::VectorXd& b) {
+                        const CutGraph& cut, const std::vector<double>& stiffness, Triplets* H, Eigen::VectorXd& b) {
   for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
     const CornerValues x = local_corners(soup, f);
     const auto cot = corner_cotangents(soup, f);
@@ -117,10 +121,12 @@ void add_fitting_energy(const TriangleSoup& soup, const std::vector<Complex>& sc
       for (int c = 0; c < 2; ++c) {
         const int vi = 2 * wi + c, vj = 2 * wj + c;
         const double dc = c == 0 ? d.real() : d.imag();
-        H.emplace_back(vi, vi, w);
-        H.emplace_back(vj, vj, w);
-        H.emplace_back(vi, vj, -w);
-        H.emplace_back(vj, vi, -w);
+        if (H) {
+          H->emplace_back(vi, vi, w);
+          H->emplace_back(vj, vj, w);
+          H->emplace_back(vi, vj, -w);
+          H->emplace_back(vj, vi, -w);
+        }
         b[vj] += w * dc;
         b[vi] -= w * dc;
       }
@@ -272,53 +278,14 @@ IntegerCandidates integer_candidates(const TriangleSoup& soup, const SurfaceAdja
   return out;
 }
 
-/// Held while METIS orders a system (a MapOrdering's first map).
-std::mutex metis_mutex;
-
-/// CHOLMOD's simplicial Cholesky factorization, analysed by CHOLMOD's default
-/// ordering (minimum degree), by METIS's nested dissection, or by a permutation
-/// given (CHOLMOD's own from an analysis before: the same factorization).
-class OrderedCholesky : public Eigen::CholmodSimplicialLLT<SparseMatrix, Eigen::Lower> {
- public:
-  /// H's pattern ordered by METIS; returns CHOLMOD's permutation (postordered).
-  std::vector<int> analyse_by_nested_dissection(const SparseMatrix& H) {
-    cholmod().nmethods = 1;
-    cholmod().method[0].ordering = CHOLMOD_METIS;
-    {
-      // METIS draws from one random state for the whole process, seeded at each
-      // call: two calls at once (placements side by side) would order differently
-      // from one at a time
-      std::lock_guard<std::mutex> lock(metis_mutex);
-      analyzePattern(H);
-    }
-    if (!m_cholmodFactor || !m_cholmodFactor->Perm)
-      throw Error(ErrorCode::solver, "the seamless map's system could not be ordered");
-    const int* p = static_cast<const int*>(m_cholmodFactor->Perm);
-    return {p, p + m_cholmodFactor->n};
-  }
-
-  /// H's pattern ordered by `permutation` (analyse_by_nested_dissection's on this pattern).
-  void analyse_by(const SparseMatrix& H, const std::vector<int>& permutation) {
-    QM_ASSERT(static_cast<Eigen::Index>(permutation.size()) == H.rows());
-    if (m_cholmodFactor) cholmod_free_factor(&m_cholmodFactor, &cholmod());
-    cholmod().nmethods = 1;
-    cholmod().method[0].ordering = CHOLMOD_GIVEN;
-    cholmod_sparse A = Eigen::viewAsCholmod(H.selfadjointView<Eigen::Lower>());
-    std::vector<int> given = permutation;  // (CHOLMOD's signature is not const)
-    m_cholmodFactor = cholmod_analyze_p(&A, given.data(), nullptr, 0, &cholmod());
-    if (!m_cholmodFactor) throw Error(ErrorCode::solver, "the seamless map's system could not be ordered");
-    m_isInitialized = true;
-    m_info = Eigen::Success;
-    m_analysisIsOk = true;
-    m_factorizationIsOk = false;
-  }
-};
-
 /// The fitting energy with the seam rows and the fixed values as penalties,
 /// solved again after each fix. A fix only adds to a diagonal entry, and the
 /// stiffening only changes values, so the sparsity pattern never changes: it is
-/// ordered and analysed once per ordering and factored numerically at each solve;
-/// the energy with the seam rows is assembled once per energy. Ordered as
+/// ordered and analysed once per ordering. Both are positive semidefinite terms
+/// of low rank, so the factorization is updated by them (OrderedCholesky::update)
+/// rather than computed again: a map factors its system once, where no fix in the
+/// factorization is taken back (the rounding's fixes enter it by the Woodbury
+/// identity first, solve_low_rank, and 64 at a time by an update). Ordered as
 /// `ordering` says (MapOrdering, analyse()), its minimum degree ordering first
 /// unless `nested_dissection_first`.
 class PenaltySolver {
@@ -344,36 +311,64 @@ class PenaltySolver {
   }
 
   void set_energy(Triplets energy, Eigen::VectorXd rhs) {
-    base_rhs_ = std::move(rhs);
+    base_rhs_ = with_seam_rhs(std::move(rhs));
     for (const Row& r : rows_)
-      for (const auto& [i, ci] : r.terms) {
-        base_rhs_[i] += penalty_weight * ci * r.rhs;
+      for (const auto& [i, ci] : r.terms)
         for (const auto& [j, cj] : r.terms) energy.emplace_back(i, j, penalty_weight * ci * cj);
-      }
     for (int v = 0; v < n_; ++v) energy.emplace_back(v, v, 0.0);  // every diagonal entry in the pattern
     base_ = SparseMatrix(n_, n_);
     base_.setFromTriplets(energy.begin(), energy.end());
   }
 
+  /// The energy changed by `change` (its matrix) and `rhs` (its right side, whole):
+  /// where the factorization can be updated (no fix in it taken back, the change
+  /// of few enough wedges and semidefinite), it is updated by the values fixed
+  /// since it was computed and by the change's columns (stiffness_change.h), and
+  /// true is returned; else nothing is changed and false returned (set_energy
+  /// then, and solve()).
+  bool update_energy(const StiffnessChange& change, Eigen::VectorXd rhs) {
+    if (refactor_ || updates_refused_) return false;
+    const std::vector<int> order = solver_.permutation();
+    std::vector<int> position(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) position[static_cast<std::size_t>(order[k])] = static_cast<int>(k);
+    const std::optional<SparseMatrix> C = change_columns(change, position, n_, max_update_wedges);
+    if (!C || !update_factor(*C)) return false;
+    for (const auto& t : change.matrix) base_.coeffRef(t.row(), t.col()) += t.value();
+    base_rhs_ = with_seam_rhs(std::move(rhs));
+    factored_solution_ = solve_factored();
+    return true;
+  }
+
+  /// The minimizer with every value fixed so far, the fixes since the last
+  /// factorization added to it by a rank-k update (their penalties w e_v e_v^T:
+  /// C's columns sqrt(w) e_v), or by a new factorization where it cannot be updated.
+  Eigen::VectorXd commit_fixes() {
+    if (!update_factor(SparseMatrix(n_, 0))) return solve();
+    factored_solution_ = solve_factored();
+    return factored_solution_;
+  }
+
+  /// The minimizer on the factorization as it stands (after update_energy).
+  const Eigen::VectorXd& updated_solution() const { return factored_solution_; }
+
   /// The minimizer with every value fixed so far: a factorization of the whole system.
   Eigen::VectorXd solve() {
     stop_if_requested(stop_);
     SparseMatrix H = base_;
-    Eigen::VectorXd b = base_rhs_;
-    for (const auto& [v, value] : fixed_) {
-      H.coeffRef(v, v) += penalty_weight;
-      b[v] += penalty_weight * value;
-    }
+    for (const auto& [v, value] : fixed_) H.coeffRef(v, v) += penalty_weight;
+    const Analysis analysed_before = analysed_;
     analyse(H);
+    // an updated factor is an LDL' one: analysed again (the same permutation), it
+    // is factored as the others
+    if (updated_ && analysed_ == analysed_before) solver_.analyse_by(H, solver_.permutation());
+    updated_ = false;
     solver_.factorize(H);
     if (solver_.info() != Eigen::Success)
       throw Error(ErrorCode::solver, "the seamless map's system could not be factored");
     ++factorizations_;
     if (analysed_ == Analysis::nested_dissection) ++nested_dissection_factorizations_;
-    Eigen::VectorXd z = solver_.solve(b);
-    if (solver_.info() != Eigen::Success || !z.allFinite())
-      throw Error(ErrorCode::solver, "the seamless map's solve failed");
     factored_ = fixed_.size();
+    Eigen::VectorXd z = solve_factored();
     factored_solution_ = z;
     columns_.clear();
     refactor_ = false;
@@ -401,14 +396,14 @@ class PenaltySolver {
   /// The same minimizer after more values were fixed, from the last factorization
   /// (H0, its solution x0): with U the fixed values' unit vectors since then, Y =
   /// H0^-1 U and M = I / w + U^T Y, the penalized system's solution is x0 + Y
-  /// M^-1 (values - U^T x0) (Woodbury; the same as solve() up to round-off). A new
-  /// factorization past max_low_rank of them.
+  /// M^-1 (values - U^T x0) (Woodbury; the same as solve() up to round-off). Past
+  /// max_low_rank of them, they are added to the factorization (commit_fixes).
   Eigen::VectorXd solve_low_rank() {
     stop_if_requested(stop_);
     if (refactor_) return solve();
     const std::size_t k = fixed_.size() - factored_;
     if (k == 0) return factored_solution_;
-    if (k > max_low_rank) return solve();
+    if (k > max_low_rank) return commit_fixes();
     std::vector<int> values(k);
     for (std::size_t i = 0; i < k; ++i) values[i] = fixed_[factored_ + i].first;
     const Eigen::MatrixXd& Y = columns_.align(values, [&](const Eigen::MatrixXd& units) {
@@ -459,6 +454,7 @@ class PenaltySolver {
 
   const std::vector<Row>& rows() const { return rows_; }
   std::size_t factorizations() const { return factorizations_; }
+  std::size_t updates() const { return updates_; }
   std::size_t nested_dissection_factorizations() const { return nested_dissection_factorizations_; }
   const LowRankColumns& low_rank_columns() const { return columns_; }
 
@@ -474,6 +470,52 @@ class PenaltySolver {
   }
 
  private:
+  /// The factorization updated by C C^T, C the columns sqrt(w) e_v of the values
+  /// fixed since it was computed, then `more`. False, and nothing changed, where it
+  /// cannot be: fixes in it were taken back, or CHOLMOD refused an update before
+  /// (then the next solve() factors anew).
+  bool update_factor(const SparseMatrix& more) {
+    if (refactor_ || updates_refused_) return false;
+    const std::size_t pending = fixed_.size() - factored_;
+    std::vector<Eigen::Triplet<double>> entries;
+    for (std::size_t k = 0; k < pending; ++k)
+      entries.emplace_back(fixed_[factored_ + k].first, static_cast<int>(k), std::sqrt(penalty_weight));
+    for (Eigen::Index c = 0; c < more.outerSize(); ++c)
+      for (SparseMatrix::InnerIterator it(more, c); it; ++it)
+        entries.emplace_back(static_cast<int>(it.row()), static_cast<int>(pending + static_cast<std::size_t>(c)),
+                             it.value());
+    SparseMatrix C(n_, static_cast<Eigen::Index>(pending) + more.cols());
+    C.setFromTriplets(entries.begin(), entries.end());
+    C.makeCompressed();
+    updated_ = true;  // (refused, the factor is symbolic: solve() analyses it again)
+    if (!solver_.update(C)) {
+      updates_refused_ = true;
+      refactor_ = true;
+      return false;
+    }
+    ++updates_;
+    factored_ = fixed_.size();
+    columns_.clear();
+    return true;
+  }
+
+  /// `rhs` with the seam rows' penalty terms.
+  Eigen::VectorXd with_seam_rhs(Eigen::VectorXd rhs) const {
+    for (const Row& r : rows_)
+      for (const auto& [i, ci] : r.terms) rhs[i] += penalty_weight * ci * r.rhs;
+    return rhs;
+  }
+
+  /// The solution on the factorization as it stands, which holds fixed_[0, factored_).
+  Eigen::VectorXd solve_factored() {
+    Eigen::VectorXd b = base_rhs_;
+    for (std::size_t k = 0; k < factored_; ++k) b[fixed_[k].first] += penalty_weight * fixed_[k].second;
+    Eigen::VectorXd z = solver_.solve(b);
+    if (solver_.info() != Eigen::Success || !z.allFinite())
+      throw Error(ErrorCode::solver, "the seamless map's solve failed");
+    return z;
+  }
+
   int n_;
   std::vector<Row> rows_;                       ///< the seams' rows
   std::vector<std::pair<int, double>> fixed_;   ///< values made integer
@@ -489,6 +531,9 @@ class PenaltySolver {
   Eigen::VectorXd factored_solution_;  ///< its solution
   LowRankColumns columns_;            ///< H0^-1 e_v of the values fixed since, and of some expected
   bool refactor_ = false;  ///< fixes in the factorization were taken back
+  bool updated_ = false;   ///< the factorization was updated (update_factor) since it was computed
+  bool updates_refused_ = false;  ///< CHOLMOD refused an update: none tried again
+  std::size_t updates_ = 0;
   StopRequest stop_;
 };
 
@@ -824,7 +869,7 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   auto energy = [&](Triplets& H, Eigen::VectorXd& b) {
     H.clear();
     b = Eigen::VectorXd::Zero(variables);
-    add_fitting_energy(soup, scales, shape, cut, stiffness, H, b);
+    add_fitting_energy(soup, scales, shape, cut, stiffness, &H, b);
     // gauge: the map is fixed up to a translation; a faint pull of wedge 0 to 0
     // makes the system definite without competing with the integer values
     H.emplace_back(0, 0, gauge_weight);
@@ -872,10 +917,19 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
       report.stiffening_lost = true;
       break;
     }
+    const std::vector<double> before = stiffness;
     stiffen(soup, adjacency, folded, stiffness);
-    energy(H, b);
-    solver.set_energy(std::move(H), std::move(b));
-    z = solver.solve();
+    // a few triangles weigh more: the factorization updated by their forms where
+    // it holds every integer value (stiffness_change.h), else factored again
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(variables);
+    add_fitting_energy(soup, scales, shape, cut, stiffness, nullptr, rhs);
+    if (solver.update_energy(stiffness_change(soup, cut, before, stiffness), rhs)) {
+      z = solver.updated_solution();
+    } else {
+      energy(H, b);
+      solver.set_energy(std::move(H), std::move(b));
+      z = solver.solve();
+    }
     ++report.solves;
     ++report.stiffening_rounds;
   }
@@ -899,6 +953,7 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   report.nested_dissection_factorizations = solver.nested_dissection_factorizations();
   report.low_rank_columns = solver.low_rank_columns().computed();
   report.low_rank_column_solves = solver.low_rank_columns().solves();
+  report.factorization_updates = solver.updates();
 
   FaceMap map = corner_values(cut, z);
   const std::vector<char> folded = folded_triangles(map);

@@ -38,6 +38,9 @@ struct SeamlessMapReport {
   /// that computed them
   std::size_t low_rank_columns = 0;
   std::size_t low_rank_column_solves = 0;
+  /// updates of the factorization in place (OrderedCholesky::update): the
+  /// rounding's fixes, 64 at a time, and the stiffening's rounds
+  std::size_t factorization_updates = 0;
   /// the stiffening stopped where its folds grew past their fewest round an interior
   /// cone the map winds a turn short (cone_winding.h): it was losing
   bool stiffening_lost = false;

@@ -371,7 +371,9 @@ TEST_CASE("the maps of one cone set share a nested dissection: a map made with i
   const TriangleSoup soup = test::grid(40);
   const SurfaceAdjacency adjacency = surface_adjacency(soup);
   const std::vector<Cone> cones = square_with_pair(soup, 11.0 / 40, 18.0 / 40, 27.0 / 40, 21.0 / 40);
-  const double size = 1.0 / 36.5;  // more values to round than one factorization takes
+  // more values to round than the low-rank solves take (they then enter the
+  // factorization by an update), and roundings taken back (a new factorization)
+  const double size = 1.0 / 36.5;
   const ConeMap m = cone_map(soup, adjacency, cones, size);
   const auto map_with = [&](MapOrdering& ordering, std::optional<Complex> shift, SeamlessMapReport& report) {
     return checked_map(soup, adjacency, m, cones, size, shift, report, &ordering);

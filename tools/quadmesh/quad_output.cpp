@@ -256,6 +256,7 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
                         {"nested_dissection_factorizations", result.cone_map.nested_dissection_factorizations},
                         {"low_rank_columns", result.cone_map.low_rank_columns},
                         {"low_rank_column_solves", result.cone_map.low_rank_column_solves},
+                        {"factorization_updates", result.cone_map.factorization_updates},
                         {"lattice_shifts", result.cone_map.lattice_shifts},
                         {"other_integers", result.cone_map.other_integers},
                         {"rounding_order", result.rounding_order},
