@@ -47,6 +47,10 @@ constexpr double integer_tolerance = 1e-6;
 /// last factorization (a column of its inverse per value: LowRankColumns) until
 /// this many.
 constexpr std::size_t max_low_rank = 64;
+/// The rounding's fixes it may still take back: a step's (a cone's position or a
+/// translation, two values) and a value tested on a fraction (DeterminedValues).
+/// The low-rank solves keep them when the others enter the factorization.
+constexpr std::size_t max_tentative_fixes = 3;
 /// The columns of H0^-1 one solve computes at least, where as many values are
 /// expected to be fixed (LowRankColumns).
 constexpr std::size_t column_batch = 4;
@@ -339,13 +343,13 @@ class PenaltySolver {
     return true;
   }
 
-  /// The minimizer with every value fixed so far, the fixes since the last
-  /// factorization added to it by a rank-k update (their penalties w e_v e_v^T:
-  /// C's columns sqrt(w) e_v), or by a new factorization where it cannot be updated.
-  Eigen::VectorXd commit_fixes() {
-    if (!update_factor(SparseMatrix(n_, 0))) return solve();
+  /// The fixes since the last factorization, but for the last `keep`, added to it
+  /// by a rank-k update (their penalties w e_v e_v^T: C's columns sqrt(w) e_v), and
+  /// its solution; false where it cannot be updated.
+  bool commit_fixes(std::size_t keep) {
+    if (!update_factor(SparseMatrix(n_, 0), keep)) return false;
     factored_solution_ = solve_factored();
-    return factored_solution_;
+    return true;
   }
 
   /// The minimizer on the factorization as it stands (after update_energy).
@@ -401,9 +405,12 @@ class PenaltySolver {
   Eigen::VectorXd solve_low_rank() {
     stop_if_requested(stop_);
     if (refactor_) return solve();
-    const std::size_t k = fixed_.size() - factored_;
+    std::size_t k = fixed_.size() - factored_;
     if (k == 0) return factored_solution_;
-    if (k > max_low_rank) return commit_fixes();
+    // the rounding's last fixes may still be taken back: left to the low-rank
+    // solve, so that taking them back needs no new factorization
+    if (k > max_low_rank && !commit_fixes(max_tentative_fixes)) return solve();
+    k = fixed_.size() - factored_;
     std::vector<int> values(k);
     for (std::size_t i = 0; i < k; ++i) values[i] = fixed_[factored_ + i].first;
     const Eigen::MatrixXd& Y = columns_.align(values, [&](const Eigen::MatrixXd& units) {
@@ -436,7 +443,9 @@ class PenaltySolver {
   /// (C z - d), each one back-substitution on the system's factorization; each
   /// shrinks the residual by about the energy's weight over the penalty's.
   Eigen::VectorXd hold_constraints(Eigen::VectorXd z) {
-    if (refactor_ || factored_ != fixed_.size()) z = solve();
+    // the factorization with every value fixed: the low-rank solves' values added
+    // to it by an update, or a new one
+    if (refactor_ || factored_ != fixed_.size()) z = commit_fixes(0) ? factored_solution_ : solve();
     for (int round = 0; round < max_multiplier_rounds && max_residual(z) > constraint_tolerance; ++round) {
       Eigen::VectorXd pull = Eigen::VectorXd::Zero(n_);
       for (const Row& r : rows_) {
@@ -471,12 +480,13 @@ class PenaltySolver {
 
  private:
   /// The factorization updated by C C^T, C the columns sqrt(w) e_v of the values
-  /// fixed since it was computed, then `more`. False, and nothing changed, where it
-  /// cannot be: fixes in it were taken back, or CHOLMOD refused an update before
-  /// (then the next solve() factors anew).
-  bool update_factor(const SparseMatrix& more) {
+  /// fixed since it was computed but the last `keep`, then `more`. False, and
+  /// nothing changed, where it cannot be: fixes in it were taken back, or CHOLMOD
+  /// refused an update before (then the next solve() factors anew).
+  bool update_factor(const SparseMatrix& more, std::size_t keep = 0) {
     if (refactor_ || updates_refused_) return false;
-    const std::size_t pending = fixed_.size() - factored_;
+    QM_ASSERT(keep <= fixed_.size() - factored_);
+    const std::size_t pending = fixed_.size() - factored_ - keep;
     std::vector<Eigen::Triplet<double>> entries;
     for (std::size_t k = 0; k < pending; ++k)
       entries.emplace_back(fixed_[factored_ + k].first, static_cast<int>(k), std::sqrt(penalty_weight));
@@ -494,7 +504,7 @@ class PenaltySolver {
       return false;
     }
     ++updates_;
-    factored_ = fixed_.size();
+    factored_ += pending;
     columns_.clear();
     return true;
   }

@@ -7,8 +7,10 @@
 // update, C C^T) rather than computed again (bunny-open's system: 0.18 s a
 // factorization). The update costs about its rank times the paths from C's rows
 // to the elimination tree's root, so C comes from a Cholesky factorization of the
-// change on its wedges, in the elimination order (rank at most the wedges less
-// one per connected patch: a quarter of four columns per triangle and axis).
+// change on its wedges, in the elimination order: rank at most the wedges less
+// one per connected patch, about a quarter of the two columns per triangle and
+// axis C would have a triangle at a time (a patch has about twice as many
+// triangles as wedges).
 #pragma once
 
 #include "libquadmesh/cones/cut_graph.h"
