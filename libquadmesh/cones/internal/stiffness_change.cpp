@@ -63,6 +63,34 @@ StiffnessChange stiffness_change(const TriangleSoup& soup, const CutGraph& cut, 
   return change;
 }
 
+namespace {
+
+/// R (m x rank, lower trapezoidal) with R R^T = A, by Cholesky's factorization in
+/// A's order, a pivot that vanishes (at most pivot_tolerance of A's largest
+/// diagonal entry) left out; nothing where A is not positive semidefinite to
+/// round-off (a negative pivot, or R R^T off A by more than match_tolerance).
+std::optional<Eigen::MatrixXd> semidefinite_root(const Eigen::MatrixXd& A) {
+  const Eigen::Index m = A.rows();
+  if (m == 0) return Eigen::MatrixXd(0, 0);
+  const double scale = A.diagonal().cwiseAbs().maxCoeff();
+  Eigen::MatrixXd rest = A;  // the Schur complement, column by column
+  Eigen::MatrixXd R = Eigen::MatrixXd::Zero(m, m);
+  Eigen::Index rank = 0;
+  for (Eigen::Index j = 0; j < m; ++j) {
+    const double pivot = rest(j, j);
+    if (pivot < -pivot_tolerance * scale) return std::nullopt;
+    if (pivot <= pivot_tolerance * scale) continue;  // (its column is checked below)
+    const Eigen::VectorXd l = rest.col(j).tail(m - j) / std::sqrt(pivot);
+    rest.bottomRightCorner(m - j, m - j).noalias() -= l * l.transpose();
+    R.col(rank++).tail(m - j) = l;
+  }
+  R.conservativeResize(m, rank);
+  if ((R * R.transpose() - A).cwiseAbs().maxCoeff() > match_tolerance * scale) return std::nullopt;
+  return R;
+}
+
+}  // namespace
+
 std::optional<Eigen::SparseMatrix<double>> change_columns(const StiffnessChange& change,
                                                           const std::vector<int>& position, int variables,
                                                           std::size_t max_wedges) {
@@ -72,37 +100,21 @@ std::optional<Eigen::SparseMatrix<double>> change_columns(const StiffnessChange&
   int column = 0;
   for (int axis = 0; axis < 2; ++axis) {
     // the wedges in elimination order: C's columns then start where L's paths do
+    const auto variable = [&](Eigen::Index i) { return 2 * change.wedges[static_cast<std::size_t>(i)] + axis; };
     std::vector<Eigen::Index> order(n);
     std::iota(order.begin(), order.end(), 0);
-    const auto variable = [&](Eigen::Index i) { return 2 * change.wedges[static_cast<std::size_t>(i)] + axis; };
     std::sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) {
       return position[static_cast<std::size_t>(variable(a))] < position[static_cast<std::size_t>(variable(b))];
     });
     const auto m = static_cast<Eigen::Index>(n);
-    Eigen::MatrixXd A(m, m);
+    Eigen::MatrixXd ordered(m, m);
     for (Eigen::Index i = 0; i < m; ++i)
-      for (Eigen::Index j = 0; j < m; ++j) A(i, j) = change.block(order[i], order[j]);
-    const double scale = m > 0 ? A.diagonal().cwiseAbs().maxCoeff() : 0;
-    Eigen::MatrixXd L = Eigen::MatrixXd::Zero(m, m);  // its columns kept, C's
-    Eigen::Index kept = 0;
-    for (Eigen::Index j = 0; j < m; ++j) {
-      const double pivot = A(j, j);
-      if (pivot < -pivot_tolerance * scale) return std::nullopt;  // not semidefinite
-      if (pivot <= pivot_tolerance * scale) continue;             // vanishing: checked below
-      const Eigen::VectorXd l = A.col(j).tail(m - j) / std::sqrt(pivot);
-      A.bottomRightCorner(m - j, m - j).noalias() -= l * l.transpose();
-      L.col(kept).tail(m - j) = l;
-      ++kept;
-    }
-    const Eigen::MatrixXd Lk = L.leftCols(kept);
-    Eigen::MatrixXd original(m, m);
-    for (Eigen::Index i = 0; i < m; ++i)
-      for (Eigen::Index j = 0; j < m; ++j) original(i, j) = change.block(order[i], order[j]);
-    if (m > 0 && (Lk * Lk.transpose() - original).cwiseAbs().maxCoeff() > match_tolerance * scale)
-      return std::nullopt;
-    for (Eigen::Index c = 0; c < kept; ++c, ++column)
+      for (Eigen::Index j = 0; j < m; ++j) ordered(i, j) = change.block(order[i], order[j]);
+    const std::optional<Eigen::MatrixXd> R = semidefinite_root(ordered);
+    if (!R) return std::nullopt;
+    for (Eigen::Index c = 0; c < R->cols(); ++c, ++column)
       for (Eigen::Index i = 0; i < m; ++i)
-        if (Lk(i, c) != 0) entries.emplace_back(variable(order[i]), column, Lk(i, c));
+        if ((*R)(i, c) != 0) entries.emplace_back(variable(order[i]), column, (*R)(i, c));
   }
   Eigen::SparseMatrix<double> C(variables, column);
   C.setFromTriplets(entries.begin(), entries.end());
