@@ -332,10 +332,7 @@ class PenaltySolver {
   /// then, and solve()).
   bool update_energy(const StiffnessChange& change, Eigen::VectorXd rhs) {
     if (refactor_ || updates_refused_) return false;
-    const std::vector<int> order = solver_.permutation();
-    std::vector<int> position(order.size());
-    for (std::size_t k = 0; k < order.size(); ++k) position[static_cast<std::size_t>(order[k])] = static_cast<int>(k);
-    const std::optional<SparseMatrix> C = change_columns(change, position, n_, max_update_wedges);
+    const std::optional<SparseMatrix> C = change_columns(change, solver_.positions(), n_, max_update_wedges);
     if (!C || !update_factor(*C)) return false;
     for (const auto& t : change.matrix) base_.coeffRef(t.row(), t.col()) += t.value();
     base_rhs_ = with_seam_rhs(std::move(rhs));

@@ -90,6 +90,8 @@ TEST_CASE("the map's factorization updated by C C^T solves H + C C^T, by either 
       std::iota(identity.begin(), identity.end(), 0);
       CHECK(sorted == identity);  // a permutation
       CHECK(solver.permutation() == p);
+      const std::vector<int> position = solver.positions();
+      for (int k = 0; k < n; ++k) CHECK(position[static_cast<std::size_t>(p[static_cast<std::size_t>(k)])] == k);
     } else {
       solver.analyzePattern(H);
     }

@@ -49,12 +49,17 @@ std::vector<int> OrderedCholesky::permutation() const {
   return {p, p + m_cholmodFactor->n};
 }
 
-bool OrderedCholesky::update(const SparseMatrix& C) {
-  QM_ASSERT(m_cholmodFactor && m_factorizationIsOk && C.rows() == static_cast<Eigen::Index>(m_cholmodFactor->n));
-  if (C.cols() == 0) return true;
+std::vector<int> OrderedCholesky::positions() const {
   const std::vector<int> order = permutation();
   std::vector<int> position(order.size());
   for (std::size_t k = 0; k < order.size(); ++k) position[static_cast<std::size_t>(order[k])] = static_cast<int>(k);
+  return position;
+}
+
+bool OrderedCholesky::update(const SparseMatrix& C) {
+  QM_ASSERT(m_cholmodFactor && m_factorizationIsOk && C.rows() == static_cast<Eigen::Index>(m_cholmodFactor->n));
+  if (C.cols() == 0) return true;
+  const std::vector<int> position = positions();
   // CHOLMOD takes C's rows in L's order (cholmod_updown does not apply the
   // permutation), each column's rows sorted
   std::vector<Eigen::Triplet<double>> permuted;

@@ -31,6 +31,9 @@ class OrderedCholesky : public Eigen::CholmodSimplicialLLT<Eigen::SparseMatrix<d
   /// The analysis's permutation (row k of L is row permutation[k] of H).
   std::vector<int> permutation() const;
 
+  /// Its inverse: the row of L each row of H is (the elimination order's positions).
+  std::vector<int> positions() const;
+
   /// The factorization of H + C C^T from that of H (CHOLMOD's multiple-rank
   /// update, in place; the factor becomes an LDL' one, which solve() takes as it
   /// is, and which is factored anew only after analyse_by). C has H's rows. False
