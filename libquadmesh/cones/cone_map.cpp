@@ -45,15 +45,16 @@ double ring_mean(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, co
 }  // namespace
 
 ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const std::vector<Cone>& cones,
-                 double size, RoundingOrder order, const StopRequest& stop) {
+                 double size, RoundingOrder order, const StopRequest& stop, const SurfaceSolvers* shared) {
   QM_ASSERT(size > 0 && adjacency.soup == &soup);
+  QM_ASSERT(!shared || (&shared->metrics.soup() == &soup && &shared->potentials.soup() == &soup));
   ConeMap out;
   out.quads = quads_per_vertex(adjacency, cones);
   require_gauss_bonnet(adjacency, out.quads, euler_characteristic(adjacency));
   const std::vector<double> target = target_curvature(adjacency, out.quads);
   const std::vector<double> curvature = vertex_curvature(soup, adjacency);
-  out.u = cone_metric(soup, adjacency, target, curvature);
-  out.field = cone_cross_field(soup, adjacency, out.u);
+  out.u = shared ? shared->metrics.solve(target, curvature) : cone_metric(soup, adjacency, target, curvature);
+  out.field = cone_cross_field(soup, adjacency, out.u, shared ? &shared->potentials : nullptr);
   if (out.field.misaligned_loop >= 0)
     throw Error(ErrorCode::unsupported,
                 "boundary loop " + std::to_string(out.field.misaligned_loop) + " is turned by " +

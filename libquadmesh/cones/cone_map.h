@@ -5,7 +5,9 @@
 // rotations across the cut.
 #pragma once
 
+#include "libquadmesh/cones/cone_metric.h"
 #include "libquadmesh/cones/cone_set.h"
+#include "libquadmesh/cones/loop_alignment.h"
 #include "libquadmesh/cones/seamless_map.h"
 
 namespace qm {
@@ -22,13 +24,25 @@ struct ConeMap {
   std::vector<int> misturned;
 };
 
+/// What the maps of the cone sets tried on one surface share, each part computed
+/// at its first use and kept: the cone metric's factored Laplacian (cone placement
+/// solves with it first) and the loop potentials of the cross field. Both on the
+/// soup the map is made on (the same object); one thread at a time.
+struct SurfaceSolvers {
+  const ConeMetricSolver& metrics;
+  LoopPotentials& potentials;
+};
+
 /// `size` the target quad edge (> 0); `order` the quantization's (seamless_map.h).
 /// Throws qm::Error: bad_input when the cones
 /// break Gauss-Bonnet or name no vertex; unsupported when a boundary loop cannot
 /// be aligned with the field (several boundary loops need cones placed for it:
 /// the placement stage); solver when a solve fails. With `stop`, asked before each
 /// of its solves: Stopped (stop_request.h) when it says so.
+/// With `shared`, its metric and potentials are those solvers' (the same bits as
+/// made afresh).
 ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const std::vector<Cone>& cones,
-                 double size, RoundingOrder order = RoundingOrder::cones_first, const StopRequest& stop = {});
+                 double size, RoundingOrder order = RoundingOrder::cones_first, const StopRequest& stop = {},
+                 const SurfaceSolvers* shared = nullptr);
 
 }  // namespace qm

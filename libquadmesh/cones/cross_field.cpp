@@ -345,7 +345,9 @@ LoopTurns loop_turns(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   return turns;
 }
 
-CrossField cone_cross_field(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u) {
+CrossField cone_cross_field(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u,
+                            LoopPotentials* potentials) {
+  QM_ASSERT(!potentials || &potentials->soup() == &soup);
   const LocalFrames frames = local_frames(soup);
   const auto [seed, seed_side] = seed_triangle(soup, adjacency);
   const double seed_angle = seed_side >= 0 ? side_angle(frames.corners[static_cast<std::size_t>(seed)], seed_side) : 0.0;
@@ -370,7 +372,9 @@ CrossField cone_cross_field(const TriangleSoup& soup, const SurfaceAdjacency& ad
   // the other loops: the trivial connection that turns each by its offset
   const Triangle& st = soup.triangles[static_cast<std::size_t>(seed)];
   const int reference = adjacency.loop_of_vertex[static_cast<std::size_t>(st[seed_side])];
-  const Eigen::MatrixXd phi = loop_potentials(soup, adjacency, reference);
+  Eigen::MatrixXd own;
+  if (!potentials) own = loop_potentials(soup, adjacency, reference);
+  const Eigen::MatrixXd& phi = potentials ? (*potentials)(reference) : own;
   Eigen::VectorXd c(phi.cols());
   for (std::size_t l = 0, col = 0; l < offset.size(); ++l) {
     if (static_cast<int>(l) == reference) continue;

@@ -85,8 +85,12 @@ struct LoopTurns {
 LoopTurns loop_turns(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const ConeMetricSolver& solver,
                      bool with_handles = true);
 
-/// Precondition: `u` from cone_metric on this soup; the soup is connected.
-CrossField cone_cross_field(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u);
+class LoopPotentials;
+
+/// Precondition: `u` from cone_metric on this soup; the soup is connected. With
+/// `potentials` (on this soup), the loops' potentials are taken from there.
+CrossField cone_cross_field(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u,
+                            LoopPotentials* potentials = nullptr);
 
 /// The angle in (-pi/4, pi/4] that differs from `angle` by whole quarter turns.
 double quarter_turn_remainder(double angle);

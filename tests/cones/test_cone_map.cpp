@@ -524,6 +524,47 @@ TEST_CASE("placed cones on a plate with two holes: one quad per corner, eight va
   check_cone_quads(q, cones);
 }
 
+TEST_CASE("maps of two cone sets on the placement's solvers: the same maps bit for bit as on solvers made afresh" *
+          doctest::test_suite("slow")) {
+  // examples/plate-two-holes.geo: three boundary loops, so the cross field turns
+  // two of them by the loop potentials
+  const TriangleSoup soup = example_at("plate-two-holes.geo", 1.75);
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  const ConeMetricSolver metrics(soup, adjacency);
+  LoopPotentials potentials(soup, adjacency);
+  const SurfaceSolvers shared{metrics, potentials};
+  ConePlacementOptions farther;
+  farther.boundary_distance = 3;
+  farther.cone_spacing = 3.5;
+  const std::vector<std::vector<Cone>> sets = {place_cones(metrics, 1.75), place_cones(metrics, 1.75, farther)};
+  REQUIRE(sets[0].size() == 12);
+  const auto vertices = [](const std::vector<Cone>& cones) {
+    std::vector<int> out;
+    for (const Cone& c : cones) out.push_back(c.vertex);
+    return out;
+  };
+  REQUIRE(vertices(sets[0]) != vertices(sets[1]));
+  for (const std::vector<Cone>& cones : sets) {
+    const ConeMap own = cone_map(soup, adjacency, cones, 1.75);
+    const ConeMap kept = cone_map(soup, adjacency, cones, 1.75, RoundingOrder::cones_first, {}, &shared);
+    CHECK(kept.u == own.u);
+    CHECK(kept.field.angle == own.field.angle);
+    CHECK(kept.field.loop_rotation == own.field.loop_rotation);
+    REQUIRE(kept.map.corners.size() == own.map.corners.size());
+    CHECK(std::equal(kept.map.corners.begin(), kept.map.corners.end(), own.map.corners.begin()));
+    CHECK(kept.report.inverted_triangles == 0);
+    // two loops turned: what the potentials carry
+    CHECK(std::count_if(own.field.loop_rotation.begin(), own.field.loop_rotation.end(),
+                        [](double r) { return r != 0.0; }) == 2);
+  }
+  // one reference loop's potentials, computed once and kept
+  const int reference = 0;
+  const Eigen::MatrixXd& phi = potentials(reference);
+  CHECK(&potentials(reference) == &phi);
+  CHECK(phi == loop_potentials(soup, adjacency, reference));
+  CHECK(phi.cols() == 2);
+}
+
 TEST_CASE("a placement asked to avoid a cone's place puts no interior cone near it, and as many elsewhere" *
           doctest::test_suite("slow")) {
   const TriangleSoup soup = example_at("plate-two-holes.geo", 1.75);

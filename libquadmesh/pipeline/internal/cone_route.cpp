@@ -160,23 +160,30 @@ constexpr const char* placed_before_error = "the same cones as a placement tried
 
 /// The quads of `cones` (cone_attempt after the placement); `misturned`, if
 /// given, gets the interior cones a folded map winds round a turn short
-/// (cone_winding.h). `stop`: the map's (cone_map.h).
+/// (cone_winding.h). `stop`: the map's (cone_map.h). With `surface` (on
+/// setup.soup), the map shares its solvers where no corner is split.
 Candidate cone_quads(const FormSetup& setup, std::vector<Cone> cones, Stages& stages, double lattice_factor,
                      bool smooth_inverted, RoundingOrder order, std::vector<int>* misturned = nullptr,
-                     const StopRequest& stop = {}) {
+                     const StopRequest& stop = {}, PlacementSurface* surface = nullptr) {
   QuadMeshResult r = setup.preamble;
   // the corners the cone metric would open to a fold are bisected first
-  TriangleSoup soup = setup.soup;
-  WideCornerSplits split = split_wide_corners(soup, cones);
+  TriangleSoup split_soup = setup.soup;
+  WideCornerSplits split = split_wide_corners(split_soup, cones);
   r.wide_corners_split = split.splits;
   const double size = setup.preamble.size_requested * lattice_factor;
-  const SurfaceAdjacency adjacency = std::move(split.adjacency);
+  // on the surface as it is, the map is made on setup.soup itself, with the
+  // solvers the placement factored
+  const bool shared = surface && split.splits == 0;
+  const TriangleSoup& soup = shared ? setup.soup : split_soup;
+  const SurfaceAdjacency& adjacency = shared ? surface->adjacency : split.adjacency;
+  std::optional<SurfaceSolvers> solvers;
+  if (shared) solvers.emplace(SurfaceSolvers{surface->metrics, surface->potentials});
   r.cones = std::move(cones);
   int corners = 0;
   for (const Cone& c : r.cones) corners += adjacency.boundary_vertex[static_cast<std::size_t>(c.vertex)];
   stages.next("cone_map", fmt::format("the seamless map with {} corner and {} interior cones", corners,
                                       static_cast<int>(r.cones.size()) - corners));
-  const ConeMap map = cone_map(soup, adjacency, r.cones, size, order, stop);
+  const ConeMap map = cone_map(soup, adjacency, r.cones, size, order, stop, solvers ? &*solvers : nullptr);
   if (map.report.lattice_shifts > 0)
     stages.announce(fmt::format("the map folded round a cone it winds round a turn short: quantized again from "
                                 "other offsets of the lattice ({} tried), {} folded triangles left",
@@ -253,7 +260,7 @@ ConeAttempt run_attempt(const FormSetup& setup, const ConePlacementOptions& plac
     stop_if_requested(stop);
     std::vector<int> misturned;
     attempt.candidate = cone_quads(setup, *attempt.cones, stages, lattice_factor, smooth_inverted, placement.rounding,
-                                   &misturned, stop);
+                                   &misturned, stop, surface->get());
     ConePlacementOptions elsewhere = placement;
     for (int again = 0; placement.place_again_where_folded && again < max_placements_elsewhere &&
                         attempt.candidate->quality.folds_left > 0 && !misturned.empty() &&
@@ -269,7 +276,8 @@ ConeAttempt run_attempt(const FormSetup& setup, const ConePlacementOptions& plac
         std::vector<Cone> cones = placed_cones(setup, elsewhere, stages, lattice_factor, metrics);
         if (placed && placed_before(cones, *placed)) break;
         Candidate candidate =
-            cone_quads(setup, cones, stages, lattice_factor, smooth_inverted, placement.rounding, &misturned, stop);
+            cone_quads(setup, cones, stages, lattice_factor, smooth_inverted, placement.rounding, &misturned, stop,
+                       surface->get());
         if (candidate.quality.folds_left < attempt.candidate->quality.folds_left) {
           attempt.cones = std::move(cones);
           attempt.candidate = std::move(candidate);
@@ -315,7 +323,7 @@ FormSetup turned_boundary_setup(const FormSetup& setup) {
 }
 
 PlacementSurface::PlacementSurface(const TriangleSoup& soup)
-    : adjacency(surface_adjacency(soup)), metrics(soup, adjacency) {}
+    : adjacency(surface_adjacency(soup)), metrics(soup, adjacency), potentials(soup, adjacency) {}
 
 std::vector<ConeAttempt> cone_attempts_side_by_side(const FormSetup& setup,
                                                     const std::vector<ConePlacementOptions>& placements,
