@@ -877,6 +877,40 @@ TEST_CASE("a scan with two large blocky holes: corners at the quad scale, the te
   check_scan_acceptance(input, -2, 2, 0.95, 45);
 }
 
+TEST_CASE("the greedy placements' search ends after three that miss only the distance" * doctest::test_suite("slow")) {
+  // the plate with two holes held to a distance no quads meet: every greedy
+  // placement whose quads are sound, in the band and right at every corner misses
+  // only the distance; after three, no other greedy placement is mapped, and the
+  // route goes on to the cross field's singularities (mapped once)
+  const TriangleSoup input = read_cad_part(test::example("plate-two-holes.geo"), 0.015);
+  QuadMeshOptions options;
+  options.size_relative = 0.015;
+  options.acceptance.max_hausdorff_relative = 1e-6;
+  std::vector<std::string> messages;
+  const QuadMeshResult r = mesh_quads(input, options, [&](const std::string& m) { messages.push_back(m); });
+  const auto count = [&](const char* text) {
+    return std::count_if(messages.begin(), messages.end(),
+                         [&](const std::string& m) { return m.find(text) != std::string::npos; });
+  };
+  // four greedy placements mapped: three judged as written (their quads smoothed,
+  // fitted and their angles smoothed first) and missing only the distance, and the
+  // second, whose quads are not judged (outside the band or a corner wrong)
+  CHECK(count("placing quarter-turn cones (corners, then the interior") == 4);
+  const auto field = std::find_if(messages.begin(), messages.end(), [](const std::string& m) {
+    return m.find("the smoothest cross field's singularities") != std::string::npos;
+  });
+  REQUIRE(field != messages.end());
+  CHECK(std::count_if(messages.begin(), field, [](const std::string& m) {
+          return m.find("moving quad corners towards right angles") != std::string::npos;
+        }) == 3);
+  CHECK(count("placing quarter-turn cones (corners, then the smoothest cross field's singularities)") == 1);
+  // what is kept is sound, whichever route
+  const QuadQuality q = quad_quality(polygon_mesh(r.quads), &input, r.size_requested);
+  CHECK(q.euler_characteristic == -1);
+  CHECK(q.boundary_loops == 3);
+  CHECK(q.inverted + q.flipped == 0);
+}
+
 TEST_CASE("cones better on every figure but the distance replace Abel quads that are farther still" *
           doctest::test_suite("slow")) {
   // kitten with two holes five rings wide, with no refinement (--max-deviation
