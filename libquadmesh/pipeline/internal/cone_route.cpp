@@ -242,10 +242,10 @@ constexpr int max_placements_elsewhere = 2;
 /// hinge cut with a hole (its triangles split far finer than the quads): seven such
 /// placements 1.00-1.15% of the diagonal from S, each a map of 3-5 s, before the
 /// route kept the nearest, 91 s in all (two threads); 63 s with this, the same
-/// quads. A generated
-/// plate (plate-sweep p3): after three such, the cross field's cones meet every
-/// criterion (0.42% from S, 100% of the quads in the band) where the ninth greedy
-/// placement did before (0.96%, 90%). None of the 52 regression inputs changes.
+/// quads. A generated plate (plate-sweep p3): after three such, the cross field's
+/// cones meet every criterion (0.42% from S, 100% of the quads in the band) where
+/// the ninth greedy placement did before (0.96%, 90%). None of the 52 regression
+/// inputs changes.
 constexpr int max_distance_misses = 3;
 
 /// One placement's attempt reported on `stages`; with `placed`, cones placed before
