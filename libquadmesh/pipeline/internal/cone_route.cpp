@@ -662,10 +662,10 @@ std::optional<ConeCandidate> first_acceptable_placement(const FormSetup& setup, 
       sound_share_in_band = sound_share_in_band || last->band.share_in_band >= size_band_goal;
       if (in_size_band(last->band) && corner_mismatches(last->candidate.result) == 0) {
         judge_as_written(*last, options, setup.diagonal, input, stages);
-        found = sound(last->candidate.quality, input, options.acceptance) && in_size_band(last->band) &&
-                last->distance <= options.acceptance.max_hausdorff_relative;
+        const bool sound_in_band = sound(last->candidate.quality, input, options.acceptance) && in_size_band(last->band);
+        found = sound_in_band && last->distance <= options.acceptance.max_hausdorff_relative;
         if (found) break;
-        distance_misses += sound(last->candidate.quality, input, options.acceptance) && in_size_band(last->band);
+        distance_misses += sound_in_band;
       }
       if (!best_sound || closer_to_acceptance(*last, *best_sound, options.acceptance)) best_sound = std::move(last);
       // (the attempts after it dropped, as one at a time would not make them)
