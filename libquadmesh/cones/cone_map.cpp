@@ -112,6 +112,24 @@ ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, co
     }
   }
   out.report.lattice_shifts = static_cast<int>(next);
+  // a map still folded where it has boundary segments under a quad and a half
+  // between corners: mapped again with those held to one quad in the fit
+  // (seamless_map.h), and kept when it folds less (a scan's hole polygons, their
+  // corners a fraction of a quad apart: a kitten cut with two holes kept the Abel
+  // quads before, its nearest cone map 10 folded triangles and 3 cells dropped)
+  if (out.report.inverted_triangles > 0 && out.report.short_segments > 0) {
+    stop_if_requested(stop);
+    SeamlessMapReport held_report;
+    FaceMap held = seamless_map(soup, adjacency, scale, out.field, out.cut, out.quads, size, held_report, order,
+                                &shape, {}, stop, nullptr, true);
+    if (held_report.inverted_triangles < out.report.inverted_triangles) {
+      held_report.lattice_shifts = out.report.lattice_shifts;
+      out.map = std::move(held);
+      out.report = held_report;
+      out.misturned = out.report.inverted_triangles > 0 ? misturned_cones(soup, adjacency, out.map, out.quads)
+                                                        : std::vector<int>{};
+    }
+  }
   return out;
 }
 

@@ -40,7 +40,11 @@ struct SurfaceSolvers {
 /// the placement stage); solver when a solve fails. With `stop`, asked before each
 /// of its solves: Stopped (stop_request.h) when it says so.
 /// With `shared`, its metric and potentials are those solvers' (the same bits as
-/// made afresh).
+/// made afresh). A map that folds round one cone it winds a turn short is
+/// quantized again from other offsets of the lattice; one still folded, with
+/// boundary segments under a quad and a half between corners, is made once more
+/// with those held to one quad (seamless_map.h `hold_short_segments`); either is
+/// kept where it folds less (report.lattice_shifts, report.segments_held).
 ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const std::vector<Cone>& cones,
                  double size, RoundingOrder order = RoundingOrder::cones_first, const StopRequest& stop = {},
                  const SurfaceSolvers* shared = nullptr);

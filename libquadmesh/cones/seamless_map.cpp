@@ -865,7 +865,8 @@ void stiffen(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const 
 FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u,
                      const CrossField& field, const CutGraph& cut, const std::vector<int>& quads, double size,
                      SeamlessMapReport& report, RoundingOrder order, const FitShape* shape,
-                     std::optional<Complex> lattice_shift, const StopRequest& stop, MapOrdering* ordering) {
+                     std::optional<Complex> lattice_shift, const StopRequest& stop, MapOrdering* ordering,
+                     bool hold_short_segments) {
   QM_ASSERT(size > 0);
   report = {};
   std::vector<Row> rows;
@@ -885,6 +886,13 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   Triplets H;
   Eigen::VectorXd b;
   energy(H, b);
+  const BoundarySegments segments = boundary_segments(soup, adjacency, field, cut, quads, scales);
+  const std::vector<std::size_t> short_ones = short_segments(segments);
+  report.short_segments = short_ones.size();
+  if (hold_short_segments) {
+    for (std::size_t s : short_ones) rows.push_back(Row{segment_terms(segments, s), 1.0});
+    report.segments_held = short_ones.size();
+  }
   // a map from a lattice shift is a new draw, its translation set apart from the
   // round-off (moved to the values' circular mean), so it may be ordered by nested
   // dissection from its first solve; another map's first solve leaves the
@@ -897,7 +905,7 @@ FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency
   const IntegerCandidates candidates =
       integer_candidates(soup, adjacency, field, cut, quads, translations, variables, order);
   Eigen::VectorXd z =
-      quantize(solver, candidates, boundary_segments(soup, adjacency, field, cut, quads, scales),
+      quantize(solver, candidates, segments,
                facing_boundary_lines(soup, adjacency, field, cut, quads), 2 * cut.wedge_count, translations,
                lattice_shift, integers, report);
   // stiffening [Bommes et al. 2009]: triangles left folded, and those around

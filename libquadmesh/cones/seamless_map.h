@@ -51,6 +51,11 @@ struct SeamlessMapReport {
   /// maps quantized again from chosen lattice offsets, where the first folded
   /// round a cone it winds a turn short (cone_map.h; set by cone_map)
   int lattice_shifts = 0;
+  /// boundary segments between corners whose target is under 1.5 quads
+  /// (boundary_segments.h short_segments), and of them those held to one quad in
+  /// the fit (`hold_short_segments`; cone_map.h maps a folded map again so)
+  std::size_t short_segments = 0;
+  std::size_t segments_held = 0;
 };
 
 /// The order the quantization makes values integer in, phase by phase. The cones'
@@ -77,11 +82,19 @@ enum class RoundingOrder { cones_first, translations_first };
 /// factored in the minimum degree ordering: the first solve's round-off gives the
 /// translation the quantization starts from, as it always has (afterwards the
 /// values fixed hold it, and the ordering moves only the round-off).
+/// With `hold_short_segments`, every boundary segment whose target is under 1.5
+/// quads (boundary_segments.h short_segments) is held to one quad in the fit
+/// itself, a row of the system beside the seams' rows, not only kept from 0 by the
+/// rounding: where the fit alone crosses such a segment, no rounding mends it
+/// (bunny-open-large's first solve put a segment of 0.6 quads at -0.44, which the
+/// rounding then made -2). The rows change the system's pattern: such a map takes
+/// no `ordering` shared with maps without them.
 /// Throws qm::Error (solver) when the system cannot be factored.
 FaceMap seamless_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, const Eigen::VectorXd& u,
                      const CrossField& field, const CutGraph& cut, const std::vector<int>& quads, double size,
                      SeamlessMapReport& report, RoundingOrder order = RoundingOrder::cones_first,
                      const FitShape* shape = nullptr, std::optional<Complex> lattice_shift = std::nullopt,
-                     const StopRequest& stop = {}, MapOrdering* ordering = nullptr);
+                     const StopRequest& stop = {}, MapOrdering* ordering = nullptr,
+                     bool hold_short_segments = false);
 
 }  // namespace qm

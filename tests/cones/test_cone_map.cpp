@@ -444,6 +444,35 @@ TEST_CASE("two corners 0.4 quads apart are not rounded onto one lattice point") 
   check_flat_quads(soup, adjacency, m.map, cones, 1);
 }
 
+TEST_CASE("the step 0.4 quads high held to one quad in the fit: one quad without another integer, nothing folded") {
+  // the stepped rectangle above, mapped with its short segments held
+  // (seamless_map's `hold_short_segments`): the step is the one segment under a
+  // quad and a half, its row holds it to one quad before any rounding, so the
+  // nearest integers already keep its corners apart (without the row the rounding
+  // needs another integer: above). A row of the wrong sign would hold it to -1 and
+  // fold the map
+  const TriangleSoup soup = stepped_rectangle(0.1);
+  const SurfaceAdjacency adjacency = surface_adjacency(soup);
+  std::vector<Cone> cones;
+  for (auto [x, y] : {std::pair{0.0, 0.0}, {2.0, 0.0}, {2.0, 1.0}, {1.0, 1.1}, {0.0, 1.1}})
+    cones.push_back({vertex_at(soup, x, y), 1});
+  cones.push_back({vertex_at(soup, 1.0, 1.0), 3});
+  const ConeMap m = cone_map(soup, adjacency, cones, 0.25);
+  SeamlessMapReport report;
+  const FaceMap held = seamless_map(soup, adjacency, m.u, m.field, m.cut, m.quads, 0.25, report,
+                                    RoundingOrder::cones_first, nullptr, std::nullopt, {}, nullptr, true);
+  CHECK(report.short_segments == 1);
+  CHECK(report.segments_held == 1);
+  CHECK(report.other_integers == 0);
+  CHECK(report.inverted_triangles == 0);
+  CHECK(report.max_seam_residual < 1e-9);
+  check_cones(soup, held, cones);
+  const Complex low = images_of(soup, held, cones[5].vertex).front();
+  const Complex high = images_of(soup, held, cones[3].vertex).front();
+  CHECK(std::abs(high - low) == doctest::Approx(1.0));
+  check_flat_quads(soup, adjacency, held, cones, 1);
+}
+
 TEST_CASE("a hole 0.4 quads below the plate's edge: the strip between them is not rounded to nothing") {
   // quads of 1/4: the hole's top line (5.6) and the edge (6) lie nearest to one
   // integer; rounded so, the strip has no quads and the map folds across it

@@ -877,6 +877,26 @@ TEST_CASE("a scan with two large blocky holes: corners at the quad scale, the te
   check_scan_acceptance(input, -2, 2, 0.95, 45);
 }
 
+TEST_CASE("a scan's hole polygons with corners a fraction of a quad apart: folded maps mapped again with their "
+          "short segments held to one quad" *
+          doctest::test_suite("slow")) {
+  // kitten with two holes five rings wide cut elsewhere: 43 corners, many of the
+  // boundary segments between them under a quad and a half. Before, the first
+  // placements' maps folded, and the one kept had a convex and a concave corner in
+  // the wrong quad count (99.5% of its quads in the band, 0.95% of the diagonal
+  // from S); a folded map is now mapped again with those segments held to one
+  // quad in the fit (cone_map.h), and one unfolds: every criterion met
+  const TriangleSoup input =
+      analyze_topology(test::cut_holes(io::read_surface(test::shared_mesh("kitten.off")).soup, {500, 2200}, 5)).soup;
+  QuadMeshResult r;
+  const std::vector<std::string> messages = check_scan_acceptance(input, -2, 2, 0.95, 43, &r);
+  CHECK(r.cone_map.segments_held > 0);
+  CHECK(r.cone_map.inverted_triangles == 0);
+  CHECK(std::any_of(messages.begin(), messages.end(), [](const std::string& m) {
+    return m.find("held to one quad, 0 folded triangles left") != std::string::npos;
+  }));
+}
+
 TEST_CASE("the greedy placements' search ends after three that miss only the distance" * doctest::test_suite("slow")) {
   // the plate with two holes held to a distance no quads meet: every greedy
   // placement whose quads are sound, in the band and right at every corner misses

@@ -258,6 +258,7 @@ MeshSummary summarize(const InputSurface& in, const QuadMeshResult& result, cons
                         {"low_rank_column_solves", result.cone_map.low_rank_column_solves},
                         {"factorization_updates", result.cone_map.factorization_updates},
                         {"lattice_shifts", result.cone_map.lattice_shifts},
+                        {"segments_held", result.cone_map.segments_held},
                         {"other_integers", result.cone_map.other_integers},
                         {"rounding_order", result.rounding_order},
                         {"wide_corners_split", result.wide_corners_split}};

@@ -3,6 +3,7 @@
 #include "libquadmesh/cones/internal/face_geometry.h"
 
 #include <cmath>
+#include <map>
 
 namespace qm {
 
@@ -55,6 +56,25 @@ double segment_length(const BoundarySegments& segments, std::size_t s, const Eig
   for (const SegmentEdge& e : segments.segments[s])
     length += e.sign * (z[2 * e.wedge_to + e.along] - z[2 * e.wedge_from + e.along]);
   return length;
+}
+
+std::vector<std::size_t> short_segments(const BoundarySegments& segments) {
+  std::vector<std::size_t> out;
+  for (std::size_t s = 0; s < segments.segments.size(); ++s)
+    if (segments.target_length[s] < short_segment_length) out.push_back(s);
+  return out;
+}
+
+std::vector<std::pair<int, double>> segment_terms(const BoundarySegments& segments, std::size_t s) {
+  std::map<int, double> sum;
+  for (const SegmentEdge& e : segments.segments[s]) {
+    sum[2 * e.wedge_to + e.along] += e.sign;
+    sum[2 * e.wedge_from + e.along] -= e.sign;
+  }
+  std::vector<std::pair<int, double>> out;
+  for (const auto& [variable, coefficient] : sum)
+    if (coefficient != 0) out.push_back({variable, coefficient});
+  return out;
 }
 
 std::size_t collapsed_segments(const BoundarySegments& segments, const Eigen::VectorXd& z) {

@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 
+#include <utility>
 #include <vector>
 
 namespace qm {
@@ -44,5 +45,17 @@ double segment_length(const BoundarySegments& segments, std::size_t s, const Eig
 /// Segments whose length is a whole number below 1 (both lines across their ends
 /// integer and on one lattice point, or crossed): the map folds at their corners.
 std::size_t collapsed_segments(const BoundarySegments& segments, const Eigen::VectorXd& z);
+
+/// A segment whose target is under this many quads is one the map may hold to one
+/// quad (seamless_map.h, `hold_short_segments`): its nearest whole length, 1, for
+/// one under 1.5, and never 0, which folds the map.
+constexpr double short_segment_length = 1.5;
+
+/// The segments whose target length is under short_segment_length, in order.
+std::vector<std::size_t> short_segments(const BoundarySegments& segments);
+
+/// Segment s's signed length (segment_length) as a sum of coefficient x unknown,
+/// one term per unknown that remains (a wedge shared by two edges cancels).
+std::vector<std::pair<int, double>> segment_terms(const BoundarySegments& segments, std::size_t s);
 
 }  // namespace qm

@@ -188,6 +188,11 @@ Candidate cone_quads(const FormSetup& setup, std::vector<Cone> cones, Stages& st
     stages.announce(fmt::format("the map folded round a cone it winds round a turn short: quantized again from "
                                 "other offsets of the lattice ({} tried), {} folded triangles left",
                                 map.report.lattice_shifts, map.report.inverted_triangles));
+  if (map.report.segments_held > 0)
+    stages.announce(fmt::format("the map folded: mapped again with its {} boundary segment{} under a quad and a "
+                                "half held to one quad, {} folded triangles left",
+                                map.report.segments_held, map.report.segments_held == 1 ? "" : "s",
+                                map.report.inverted_triangles));
   if (order == RoundingOrder::translations_first) r.rounding_order = "translations_first";
   r.cone_map = map.report;
   if (misturned) *misturned = map.misturned;
