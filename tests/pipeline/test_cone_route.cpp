@@ -128,6 +128,18 @@ int boundary_cone_count(const QuadMeshResult& r) {
   return count;
 }
 
+/// The shared kitten (genus 1, closed) with blocky holes cut round `centres`,
+/// `rings` rings wide (test::cut_holes), its topology analysed.
+TriangleSoup kitten_with_holes(const std::vector<int>& centres, int rings) {
+  return analyze_topology(test::cut_holes(io::read_surface(test::shared_mesh("kitten.off")).soup, centres, rings)).soup;
+}
+
+/// Whether one of the progress `messages` contains `text`.
+bool said(const std::vector<std::string>& messages, const std::string& text) {
+  return std::any_of(messages.begin(), messages.end(),
+                     [&](const std::string& m) { return m.find(text) != std::string::npos; });
+}
+
 /// `input` meshed by mesh_quads at 1.5% of the diagonal keeps its cones and meets
 /// check_acceptance, with no more interior singular vertices than max(24, 1% of
 /// the quads).
@@ -866,8 +878,7 @@ TEST_CASE("a scan with two large blocky holes: corners at the quad scale, the te
   // than the 38 cones allowed and the Abel quads were kept: 62% in the band, 2.3% of
   // the diagonal from the surface. At the quad scale (boundary_corners.h) the
   // corners are 45, each in its quad count, the teeth between them straight
-  const TriangleSoup input =
-      analyze_topology(test::cut_holes(io::read_surface(test::shared_mesh("kitten.off")).soup, {550, 2331}, 6)).soup;
+  const TriangleSoup input = kitten_with_holes({550, 2331}, 6);
   const SurfaceAdjacency adjacency = surface_adjacency(input);
   const std::vector<double> curvature = vertex_curvature(input, adjacency);
   int sharp = 0;
@@ -886,15 +897,12 @@ TEST_CASE("a scan's hole polygons with corners a fraction of a quad apart: folde
   // the wrong quad count (99.5% of its quads in the band, 0.95% of the diagonal
   // from S); a folded map is now mapped again with those segments held to one
   // quad in the fit (cone_map.h), and one unfolds: every criterion met
-  const TriangleSoup input =
-      analyze_topology(test::cut_holes(io::read_surface(test::shared_mesh("kitten.off")).soup, {500, 2200}, 5)).soup;
+  const TriangleSoup input = kitten_with_holes({500, 2200}, 5);
   QuadMeshResult r;
   const std::vector<std::string> messages = check_scan_acceptance(input, -2, 2, 0.95, 43, &r);
   CHECK(r.cone_map.segments_held > 0);
   CHECK(r.cone_map.inverted_triangles == 0);
-  CHECK(std::any_of(messages.begin(), messages.end(), [](const std::string& m) {
-    return m.find("held to one quad, 0 folded triangles left") != std::string::npos;
-  }));
+  CHECK(said(messages, "held to one quad, 0 folded triangles left"));
 }
 
 TEST_CASE("the greedy placements' search ends after three that miss only the distance" * doctest::test_suite("slow")) {
@@ -940,8 +948,7 @@ TEST_CASE("cones better on every figure but the distance replace Abel quads that
   // The Abel result was kept for the criterion that both miss; the cones' now is,
   // the Abel quads' distance recorded beside theirs. (With the refinement, the
   // default, the cones' chords are split where they deviate: below)
-  const TriangleSoup input =
-      analyze_topology(test::cut_holes(io::read_surface(test::shared_mesh("kitten.off")).soup, {1852, 2292}, 5)).soup;
+  const TriangleSoup input = kitten_with_holes({1852, 2292}, 5);
   QuadMeshOptions options;
   options.size_relative = 0.015;
   options.max_deviation = -1;
@@ -973,8 +980,7 @@ TEST_CASE("cones farther from the surface than the criterion, but for that accep
   // every corner right, 1.3% of the diagonal from the surface) get the chords
   // through the quads farther than 0.8% of the diagonal split, within 1.25 x their
   // count, and then meet every criterion (the Abel quads before: 1.7% away)
-  const TriangleSoup input =
-      analyze_topology(test::cut_holes(io::read_surface(test::shared_mesh("kitten.off")).soup, {1852, 2292}, 5)).soup;
+  const TriangleSoup input = kitten_with_holes({1852, 2292}, 5);
   QuadMeshResult r;
   const std::vector<std::string> messages = check_scan_acceptance(input, -2, 2, 0.95, 34, &r);
   CHECK(r.cone_route_failure.empty());
@@ -984,9 +990,7 @@ TEST_CASE("cones farther from the surface than the criterion, but for that accep
   // splitting adds only regular vertices: the interior singular ones are the cones
   const QuadQuality q = quad_quality(polygon_mesh(r.quads), &input, r.size_requested);
   CHECK(static_cast<int>(q.irregular_interior) == static_cast<int>(r.cones.size()) - boundary_cone_count(r));
-  CHECK(std::any_of(messages.begin(), messages.end(), [](const std::string& m) {
-    return m.find("splitting the chords where the cones' quads are farther than") != std::string::npos;
-  }));
+  CHECK(said(messages, "splitting the chords where the cones' quads are farther than"));
 }
 
 TEST_CASE("pig: its ears' caps get their cones together, and its quads meet every criterion" *
