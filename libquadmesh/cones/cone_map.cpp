@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <optional>
 #include <string>
 
 namespace qm {
@@ -120,11 +121,18 @@ ConeMap cone_map(const TriangleSoup& soup, const SurfaceAdjacency& adjacency, co
   if (out.report.inverted_triangles > 0 && out.report.short_segments > 0) {
     stop_if_requested(stop);
     SeamlessMapReport held_report;
-    FaceMap held = seamless_map(soup, adjacency, scale, out.field, out.cut, out.quads, size, held_report, order,
-                                &shape, {}, stop, nullptr, true);
-    if (held_report.inverted_triangles < out.report.inverted_triangles) {
+    std::optional<FaceMap> held;
+    try {
+      held = seamless_map(soup, adjacency, scale, out.field, out.cut, out.quads, size, held_report, order, &shape, {},
+                          stop, nullptr, true);
+    } catch (const Stopped&) {
+      throw;
+    } catch (const Error&) {
+      // no held map (its system not factored): the folded one stands
+    }
+    if (held && held_report.inverted_triangles < out.report.inverted_triangles) {
       held_report.lattice_shifts = out.report.lattice_shifts;
-      out.map = std::move(held);
+      out.map = std::move(*held);
       out.report = held_report;
       out.misturned = out.report.inverted_triangles > 0 ? misturned_cones(soup, adjacency, out.map, out.quads)
                                                         : std::vector<int>{};
