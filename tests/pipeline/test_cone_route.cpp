@@ -134,11 +134,14 @@ TriangleSoup kitten_with_holes(const std::vector<int>& centres, int rings) {
   return analyze_topology(test::cut_holes(io::read_surface(test::shared_mesh("kitten.off")).soup, centres, rings)).soup;
 }
 
-/// Whether one of the progress `messages` contains `text`.
-bool said(const std::vector<std::string>& messages, const std::string& text) {
-  return std::any_of(messages.begin(), messages.end(),
-                     [&](const std::string& m) { return m.find(text) != std::string::npos; });
+/// How many of the progress `messages` contain `text`.
+std::ptrdiff_t times_said(const std::vector<std::string>& messages, const std::string& text) {
+  return std::count_if(messages.begin(), messages.end(),
+                       [&](const std::string& m) { return m.find(text) != std::string::npos; });
 }
+
+/// Whether one of the progress `messages` contains `text`.
+bool said(const std::vector<std::string>& messages, const std::string& text) { return times_said(messages, text) > 0; }
 
 /// `input` meshed by mesh_quads at 1.5% of the diagonal keeps its cones and meets
 /// check_acceptance, with no more interior singular vertices than max(24, 1% of
@@ -257,10 +260,7 @@ TEST_CASE("a cone route none of whose greedy placements is sound maps each place
   const QuadMeshResult r = mesh_cad_part(test::example("parts/z-plate-holes.geo"), input,
                                          [&](const std::string& m) { messages.push_back(m); });
   CHECK(r.singularities == "cones");
-  const auto maps = std::count_if(messages.begin(), messages.end(), [](const std::string& m) {
-    return m.find("the seamless map with") != std::string::npos;
-  });
-  CHECK(maps == 1);
+  CHECK(times_said(messages, "the seamless map with") == 1);
 }
 
 TEST_CASE("the cones steer the field's turn round fertility's handles" * doctest::test_suite("slow")) {
@@ -922,14 +922,10 @@ TEST_CASE("the greedy placements' search ends after three that miss only the dis
   options.acceptance.max_hausdorff_relative = 1e-6;
   std::vector<std::string> messages;
   const QuadMeshResult r = mesh_quads(input, options, [&](const std::string& m) { messages.push_back(m); });
-  const auto count = [&](const char* text) {
-    return std::count_if(messages.begin(), messages.end(),
-                         [&](const std::string& m) { return m.find(text) != std::string::npos; });
-  };
   // four greedy placements mapped: three judged as written (their quads smoothed,
   // fitted and their angles smoothed first) and missing only the distance, and the
   // second, whose quads are not judged (outside the band or a corner wrong)
-  CHECK(count("placing quarter-turn cones (corners, then the interior") == 4);
+  CHECK(times_said(messages, "placing quarter-turn cones (corners, then the interior") == 4);
   const auto field = std::find_if(messages.begin(), messages.end(), [](const std::string& m) {
     return m.find("the smoothest cross field's singularities") != std::string::npos;
   });
@@ -937,7 +933,8 @@ TEST_CASE("the greedy placements' search ends after three that miss only the dis
   CHECK(std::count_if(messages.begin(), field, [](const std::string& m) {
           return m.find("moving quad corners towards right angles") != std::string::npos;
         }) == 3);
-  CHECK(count("placing quarter-turn cones (corners, then the smoothest cross field's singularities)") == 1);
+  CHECK(times_said(messages,
+                   "placing quarter-turn cones (corners, then the smoothest cross field's singularities)") == 1);
   // what is kept is sound, whichever route
   const QuadQuality q = quad_quality(polygon_mesh(r.quads), &input, r.size_requested);
   CHECK(q.euler_characteristic == -1);
