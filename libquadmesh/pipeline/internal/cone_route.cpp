@@ -13,6 +13,7 @@
 #include "libquadmesh/extract/size_refinement.h"
 #include "libquadmesh/pipeline/internal/attempt.h"
 #include "libquadmesh/pipeline/internal/deviation_budget.h"
+#include "libquadmesh/pipeline/internal/placement_summary.h"
 #include "libquadmesh/pipeline/internal/quad_improvement.h"
 #include "libquadmesh/quality/hausdorff.h"
 #include "libquadmesh/quality/quad_quality.h"
@@ -138,12 +139,7 @@ bool has_handles(SurfaceTopology t) { return 2 - t.euler_characteristic - t.boun
 /// `lattice_factor`, with `metrics` (on setup.soup).
 std::vector<Cone> placed_cones(const FormSetup& setup, const ConePlacementOptions& placement, Stages& stages,
                                double lattice_factor, const ConeMetricSolver& metrics) {
-  stages.next("cone_placement",
-              placement.interior == InteriorCones::cross_field
-                  ? std::string("placing quarter-turn cones (corners, then the smoothest cross field's singularities)")
-                  : fmt::format("placing quarter-turn cones (corners, then the interior, {:g} quads from the boundary "
-                                "and {:g} apart)",
-                                placement.boundary_distance, placement.cone_spacing));
+  stages.next("cone_placement", fmt::format("placing quarter-turn cones ({})", placement_summary(placement)));
   return place_cones(metrics, setup.preamble.size_requested * lattice_factor, placement);
 }
 
