@@ -381,11 +381,20 @@ class PenaltySolver {
   /// pays (MapOrdering), from the first solve of a map from a lattice shift and
   /// from the second of another map.
   void analyse(const SparseMatrix& H) {
-    if (analysed_ == Analysis::none) {
+    if (analysed_ == Analysis::none && !minimum_degree_first_ && ordering_.has_nested_dissection()) {
+      // the cone set's nested dissection is known (it paid on this very pattern):
+      // no minimum degree analysis to decide it again
+      nested_dissection_pays_ = true;
+    } else if (analysed_ == Analysis::none) {
       solver_.analyzePattern(H);
       analysed_ = Analysis::minimum_degree;
       nested_dissection_pays_ = ordering_.nested_dissection_pays(solver_.cholmod().fl, n_);
-      if (minimum_degree_first_) return;
+      if (minimum_degree_first_) {
+        // the maps from lattice offsets, made where this one folds, will ask for it
+        if (nested_dissection_pays_)
+          ordering_.offer_nested_dissection([H] { return OrderedCholesky().analyse_by_nested_dissection(H); });
+        return;
+      }
     }
     if (analysed_ == Analysis::nested_dissection || !nested_dissection_pays_) return;
     const std::vector<int>& permutation =

@@ -3,6 +3,9 @@
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
+
+#include <atomic>
 
 namespace qm {
 
@@ -28,6 +31,41 @@ ThreadLimit::ThreadLimit(std::size_t threads) : impl_(std::make_unique<Impl>()) 
 }
 
 ThreadLimit::~ThreadLimit() = default;
+
+struct IdleWork::Impl {
+  enum State { offered, started, withdrawn };
+  std::function<void()> work;
+  std::atomic<int> state{offered};
+  std::atomic<bool> ran{false};
+  tbb::task_group group;
+};
+
+IdleWork::IdleWork(std::function<void()> work) : impl_(std::make_unique<Impl>()) {
+  impl_->work = std::move(work);
+  if (worker_threads() <= 1) {
+    impl_->state = Impl::withdrawn;
+    return;
+  }
+  // the task waits in the offering thread's queue; another thread that runs out
+  // of work takes it, and the offering thread, waiting in withdraw(), finds it
+  // withdrawn
+  Impl* impl = impl_.get();
+  impl_->group.run([impl] {
+    int expected = Impl::offered;
+    if (!impl->state.compare_exchange_strong(expected, Impl::started)) return;
+    impl->work();
+    impl->ran = true;
+  });
+}
+
+IdleWork::~IdleWork() { withdraw(); }
+
+bool IdleWork::withdraw() {
+  int expected = Impl::offered;
+  impl_->state.compare_exchange_strong(expected, Impl::withdrawn);
+  impl_->group.wait();
+  return impl_->ran;
+}
 
 std::size_t worker_threads() {
   return tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);

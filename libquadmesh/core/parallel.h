@@ -43,4 +43,25 @@ class ThreadLimit {
 /// The number of worker threads loops may use now.
 std::size_t worker_threads();
 
+/// Work offered to a worker thread that has nothing else to do, for a result
+/// that may be needed later (a map's ordering while the map that may need it is
+/// made): it runs only where a thread takes it before withdraw(), so it never
+/// delays the thread that offered it. Nothing is offered with one worker thread.
+/// The work must not throw (a throw ends the program: catch inside it).
+class IdleWork {
+ public:
+  explicit IdleWork(std::function<void()> work);
+  /// withdraw()
+  ~IdleWork();
+  IdleWork(const IdleWork&) = delete;
+  IdleWork& operator=(const IdleWork&) = delete;
+  /// Takes the work back if no thread has started it, else waits until it ends.
+  /// True when it ran.
+  bool withdraw();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
 }  // namespace qm
