@@ -5,6 +5,7 @@
 #include "libquadmesh/cones/internal/ordered_cholesky.h"
 #include "libquadmesh/cones/map_ordering.h"
 #include "libquadmesh/core/parallel.h"
+#include "tests/support/grid_system.h"
 
 #include <doctest/doctest.h>
 
@@ -14,31 +15,11 @@
 #include <vector>
 
 using namespace qm;
+using qm::test::grid_system;
 
 namespace {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
-
-/// A grid graph's Laplacian (side x side) plus a small diagonal.
-SparseMatrix grid_system(int side) {
-  std::vector<Eigen::Triplet<double>> t;
-  const auto id = [side](int i, int j) { return i * side + j; };
-  for (int i = 0; i < side; ++i)
-    for (int j = 0; j < side; ++j) {
-      t.emplace_back(id(i, j), id(i, j), 1e-3);
-      for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{0, 1}})
-        if (i + di < side && j + dj < side) {
-          const int a = id(i, j), b = id(i + di, j + dj);
-          t.emplace_back(a, a, 1.0);
-          t.emplace_back(b, b, 1.0);
-          t.emplace_back(a, b, -1.0);
-          t.emplace_back(b, a, -1.0);
-        }
-    }
-  SparseMatrix H(side * side, side * side);
-  H.setFromTriplets(t.begin(), t.end());
-  return H;
-}
 
 /// Waits up to `seconds` for `flag`.
 bool wait_for(const std::atomic<bool>& flag, double seconds) {

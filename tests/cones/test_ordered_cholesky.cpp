@@ -3,6 +3,7 @@
 // solves are those of H + C C^T factored anew, whichever ordering analysed it,
 // and it can be analysed and factored again afterwards.
 #include "libquadmesh/cones/internal/ordered_cholesky.h"
+#include "tests/support/grid_system.h"
 
 #include <doctest/doctest.h>
 
@@ -14,33 +15,11 @@
 #include <vector>
 
 using namespace qm;
+using qm::test::grid_system;
 
 namespace {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
-
-/// A grid graph's Laplacian (side x side) plus a small diagonal: sparse, symmetric
-/// positive definite, with fill in its factor.
-SparseMatrix grid_system(int side) {
-  std::vector<Eigen::Triplet<double>> t;
-  const auto id = [side](int i, int j) { return i * side + j; };
-  for (int i = 0; i < side; ++i)
-    for (int j = 0; j < side; ++j) {
-      t.emplace_back(id(i, j), id(i, j), 1e-3 * (1 + (i + 2 * j) % 5));
-      for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{0, 1}})
-        if (i + di < side && j + dj < side) {
-          const int a = id(i, j), b = id(i + di, j + dj);
-          const double w = 1 + 0.1 * ((i * 7 + j * 3) % 4);
-          t.emplace_back(a, a, w);
-          t.emplace_back(b, b, w);
-          t.emplace_back(a, b, -w);
-          t.emplace_back(b, a, -w);
-        }
-    }
-  SparseMatrix H(side * side, side * side);
-  H.setFromTriplets(t.begin(), t.end());
-  return H;
-}
 
 /// Columns touching a few neighbouring unknowns each (a triangle's form) and unit
 /// columns times 1e4 (a fixed value's penalty).
