@@ -35,8 +35,7 @@ ThreadLimit::~ThreadLimit() = default;
 struct IdleWork::Impl {
   enum State { offered, started, withdrawn };
   std::function<void()> work;
-  std::atomic<int> state{offered};
-  std::atomic<bool> ran{false};
+  std::atomic<int> state{offered};  // started: a thread took it (it has ended once withdraw() waited)
   tbb::task_group group;
 };
 
@@ -54,7 +53,6 @@ IdleWork::IdleWork(std::function<void()> work) : impl_(std::make_unique<Impl>())
     int expected = Impl::offered;
     if (!impl->state.compare_exchange_strong(expected, Impl::started)) return;
     impl->work();
-    impl->ran = true;
   });
 }
 
@@ -64,7 +62,7 @@ bool IdleWork::withdraw() {
   int expected = Impl::offered;
   impl_->state.compare_exchange_strong(expected, Impl::withdrawn);
   impl_->group.wait();
-  return impl_->ran;
+  return impl_->state == Impl::started;
 }
 
 std::size_t worker_threads() {
